@@ -1,0 +1,104 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_IO_READ_MEDIT_H
+#define CGAL_HEXAHEDRAL_REMESHING_IO_READ_MEDIT_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/internal/text_tokenizer.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace IO {
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Reads a MEDIT ASCII `.mesh` file into `soup`: `Vertices` (x y z ref), `Tetrahedra` (4 indices,
+/// 1-based, ref), and the hints `Triangles` (ref = surface patch), `Edges` (ref = feature curve),
+/// `Corners`. The blocks `Quadrilaterals`, `Hexahedra`, `Ridges`, `RequiredVertices`,
+/// `RequiredEdges`, `Prisms` and `Pyramids` are skipped, as are `#` comments.
+///
+/// \throws Input_error (file, line, problem) for an unreadable, truncated or malformed file;
+///         Unsupported_input for binary `.meshb` content or 2D meshes.
+template <class Point>
+void read_MEDIT(const std::string& text, const std::string& source, Tetrahedral_soup_3<Point>& soup)
+{
+  using Hexahedral_remeshing::internal::Text_tokenizer;
+  Text_tokenizer tk(text, source);
+  soup = Tetrahedral_soup_3<Point>();
+  soup.source = source;
+  bool have_vertices = false, ended = false;
+
+  auto index = [&](const char* what) -> std::size_t {
+    const long long v = tk.next_integer(what);
+    if(v < 1) tk.fail(std::string("invalid index ") + std::to_string(v) + " in " + what + " (indices are 1-based)");
+    return std::size_t(v - 1);
+  };
+
+  while(!ended && !tk.at_end()) {
+    const std::string key = tk.next("a keyword");
+    if(key.empty()) break;
+    if(key[0] == '#') { tk.rest_of_line(); continue; }
+    if(key == "MeshVersionFormatted") {
+      tk.next_integer("MeshVersionFormatted");
+    } else if(key == "Dimension") {
+      const long long d = tk.next_integer("Dimension");
+      if(d != 3) tk.unsupported("only 3D meshes are supported (Dimension " + std::to_string(d) + ")");
+    } else if(key == "Vertices") {
+      const std::size_t n = tk.next_count("Vertices", 4);
+      soup.points.reserve(n);
+      for(std::size_t i = 0; i < n; ++i) {
+        const double x = tk.next_double("Vertices"), y = tk.next_double("Vertices"), z = tk.next_double("Vertices");
+        tk.next_integer("Vertices reference");
+        soup.points.push_back(Point(x, y, z));
+      }
+      have_vertices = true;
+    } else if(key == "Tetrahedra") {
+      const std::size_t n = tk.next_count("Tetrahedra", 5);
+      for(std::size_t i = 0; i < n; ++i) {
+        std::array<std::size_t, 4> t;
+        for(int k = 0; k < 4; ++k) t[k] = index("Tetrahedra");
+        soup.tetrahedron_lines.push_back(tk.line());
+        tk.next_integer("Tetrahedra reference");
+        soup.tetrahedra.push_back(t);
+      }
+    } else if(key == "Triangles") {
+      const std::size_t n = tk.next_count("Triangles", 4);
+      for(std::size_t i = 0; i < n; ++i) {
+        std::array<std::size_t, 3> t;
+        for(int k = 0; k < 3; ++k) t[k] = index("Triangles");
+        soup.triangles.push_back(t);
+        soup.triangle_patches.push_back(int(tk.next_integer("Triangles reference")));
+      }
+    } else if(key == "Edges") {
+      const std::size_t n = tk.next_count("Edges", 3);
+      for(std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = index("Edges"), b = index("Edges");
+        soup.feature_edges.push_back({a, b});
+        soup.feature_edge_curves.push_back(int(tk.next_integer("Edges reference")));
+      }
+    } else if(key == "Corners") {
+      const std::size_t n = tk.next_count("Corners", 1);
+      for(std::size_t i = 0; i < n; ++i) soup.corners.push_back(index("Corners"));
+    } else if(key == "Quadrilaterals" || key == "Hexahedra" || key == "Ridges" || key == "RequiredVertices" ||
+              key == "RequiredEdges" || key == "Prisms" || key == "Pyramids") {
+      const std::size_t per = key == "Quadrilaterals" ? 5 : key == "Hexahedra" ? 9 : key == "Prisms" ? 7
+                            : key == "Pyramids" ? 6 : 1;
+      const std::size_t n = tk.next_count(key.c_str(), per);
+      for(std::size_t i = 0; i < n * per; ++i) tk.next_integer(key.c_str());
+    } else if(key == "End") {
+      ended = true;
+    } else {
+      tk.unsupported("unsupported MEDIT keyword '" + key + "'");
+    }
+  }
+  if(!have_vertices) tk.fail("no Vertices block");
+}
+
+} // namespace IO
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_IO_READ_MEDIT_H

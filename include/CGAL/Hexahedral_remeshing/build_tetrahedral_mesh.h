@@ -1,0 +1,57 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_BUILD_TETRAHEDRAL_MESH_H
+#define CGAL_HEXAHEDRAL_REMESHING_BUILD_TETRAHEDRAL_MESH_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/internal/build_tetrahedral_mesh.h>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Builds `mesh` from a soup of tetrahedra: checks the input, re-orients inverted tetrahedra,
+/// builds faces, boundary triangles, edges and their rings, components, and transfers the feature
+/// hints of the soup (patches, curves, corners). Runs in O(n log n).
+///
+/// \throws Input_error naming the source, the element and the problem for: no tetrahedra, a
+/// non-finite coordinate, an out-of-range index, a degenerate tetrahedron (exact test), a duplicated
+/// tetrahedron, a face shared by more than two tetrahedra, overlapping tetrahedra, a non-manifold
+/// boundary edge or vertex.
+///
+/// \param soup the input
+/// \param mesh the output (overwritten)
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{split_multi_boundary_tetrahedra}
+///     \cgalParamDescription{split every tetrahedron with two or more boundary faces 1-to-4 at its
+///       barycentre, so that each tetrahedron carries at most one boundary alignment constraint;
+///       new vertices are appended after the input ones}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of the traits}
+///     \cgalParamType{a model of `HexahedralRemeshingTraits_3`}
+///     \cgalParamDefault{`Traits()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void build_tetrahedral_mesh(const Tetrahedral_soup_3<typename Traits::Point_3>& soup,
+                            Tetrahedral_mesh_3<Traits>& mesh,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const bool split = choose_parameter(get_parameter(np, internal_np::split_multi_boundary_tetrahedra), true);
+  const Traits traits = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Traits());
+  internal::Tetrahedral_mesh_builder<Traits>(traits).build(soup, mesh, split);
+}
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_BUILD_TETRAHEDRAL_MESH_H

@@ -1,0 +1,61 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_PARAMETERS_H
+#define CGAL_HEXAHEDRAL_REMESHING_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+/// Tags of the named parameters of this package (CGAL's own tags live in `CGAL::internal_np`).
+namespace internal_np {
+enum split_multi_boundary_tetrahedra_t { split_multi_boundary_tetrahedra };
+enum maximum_tetrahedron_volume_t { maximum_tetrahedron_volume };
+enum radius_edge_ratio_t { radius_edge_ratio };
+} // namespace internal_np
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Named parameters of the package.
+///
+/// Chaining rule (CGAL 5.5 generates the member-function chaining only for its own parameters):
+/// - each parameter `p` of this package comes as `p(value)` and as `p(value, np)`, the latter
+///   appending to an existing pack `np` (ours or CGAL's):
+///   `split_multi_boundary_tetrahedra(false, radius_edge_ratio(1.5))`;
+/// - CGAL's own parameters chain as members after ours: `radius_edge_ratio(1.5).verbose(true)`.
+namespace parameters {
+
+#define CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(NAME)                                              \
+  template <class T>                                                                                \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)                    \
+  {                                                                                                 \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(value);                        \
+  }                                                                                                 \
+  template <class T, class T2, class Tag2, class Base2>                                             \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                         \
+                                  CGAL::Named_function_parameters<T2, Tag2, Base2> >                \
+  NAME(const T& value, const CGAL::Named_function_parameters<T2, Tag2, Base2>& np)                  \
+  {                                                                                                 \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                \
+                                           CGAL::Named_function_parameters<T2, Tag2, Base2> >(value, np); \
+  }
+
+#ifdef DOXYGEN_RUNNING
+/// Split every tetrahedron with more than one boundary face 1-to-4 at its barycentre (`bool`, default `true`).
+template <class T> unspecified_type split_multi_boundary_tetrahedra(const T& value);
+/// TetGen: maximum volume of a tetrahedron (`double`, default: no bound).
+template <class T> unspecified_type maximum_tetrahedron_volume(const T& value);
+/// TetGen: radius-edge ratio bound of the quality refinement (`double`, default `2.0`; 0 disables refinement).
+template <class T> unspecified_type radius_edge_ratio(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(radius_edge_ratio)
+#endif
+
+} // namespace parameters
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_PARAMETERS_H
