@@ -14,6 +14,7 @@ namespace internal_np {
 enum split_multi_boundary_tetrahedra_t { split_multi_boundary_tetrahedra };
 enum maximum_tetrahedron_volume_t { maximum_tetrahedron_volume };
 enum radius_edge_ratio_t { radius_edge_ratio };
+enum preserve_surface_triangles_t { preserve_surface_triangles };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -48,8 +49,11 @@ template <class T> unspecified_type split_multi_boundary_tetrahedra(const T& val
 template <class T> unspecified_type maximum_tetrahedron_volume(const T& value);
 /// TetGen: radius-edge ratio bound of the quality refinement (`double`, default `2.0`; 0 disables refinement).
 template <class T> unspecified_type radius_edge_ratio(const T& value);
+/// TetGen: keep every surface triangle as a boundary face (`bool`, default `false`).
+template <class T> unspecified_type preserve_surface_triangles(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(preserve_surface_triangles)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(radius_edge_ratio)
 #endif

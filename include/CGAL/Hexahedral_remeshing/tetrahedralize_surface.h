@@ -27,9 +27,11 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 
 /// \ingroup PkgHexahedralRemeshingRef
-/// Tetrahedralizes the closed surface `surface` with TetGen, preserving its boundary (TetGen
-/// switches `pY`: no Steiner point is inserted on the surface, so every surface triangle is a
-/// boundary face of the result), and appends the result to `soup` (which is cleared first).
+/// Tetrahedralizes the closed surface `surface` with TetGen (piecewise linear complex, switch `p`)
+/// and stores the result in `soup` (which is cleared first). The boundary of the result is the
+/// input surface, geometrically: TetGen may insert points on it to meet the quality and volume
+/// bounds, unless `preserve_surface_triangles` is set (switch `Y`, which in TetGen 1.5 also
+/// prevents most refinement).
 /// The surface carries no patch or feature information, so the soup has no hints.
 ///
 /// \tparam FaceListGraph a model of `FaceListGraph` (e.g. `CGAL::Surface_mesh`)
@@ -41,6 +43,11 @@ namespace Hexahedral_remeshing {
 ///     \cgalParamDescription{a property map associating points to the vertices of `surface`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to a point type}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, surface)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{preserve_surface_triangles}
+///     \cgalParamDescription{keep every surface triangle as a boundary face (no Steiner point on the surface)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_tetrahedron_volume}
 ///     \cgalParamDescription{upper bound on the volume of the tetrahedra (TetGen switch `a`)}
@@ -70,6 +77,7 @@ void tetrahedralize_surface(const FaceListGraph& surface, Tetrahedral_soup_3<Poi
   soup.source = source;
   const double max_volume = choose_parameter(get_parameter(np, internal_np::maximum_tetrahedron_volume), 0.);
   const double ratio = choose_parameter(get_parameter(np, internal_np::radius_edge_ratio), 2.0);
+  const bool preserve = choose_parameter(get_parameter(np, internal_np::preserve_surface_triangles), false);
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, surface));
 
@@ -113,7 +121,8 @@ void tetrahedralize_surface(const FaceListGraph& surface, Tetrahedral_soup_3<Poi
   }
 
   std::ostringstream sw;
-  sw << "pzQY";
+  sw << "pzQ";
+  if(preserve) sw << "Y";
   if(ratio > 0) sw << "q" << ratio;
   if(max_volume > 0) sw << "a" << max_volume;
   std::string switches = sw.str();

@@ -1,0 +1,56 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+//
+// hexmesh: command-line front end of the Hexahedral_remeshing package.
+#include "cli_common.h"
+#include "command_info.h"
+
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+
+#include <iostream>
+#include <string>
+
+namespace {
+
+const char* usage =
+  "usage: hexmesh COMMAND [OPTIONS]\n"
+  "\n"
+  "Commands:\n"
+  "  info IN [--json FILE]     mesh statistics, boundary edges by exact dihedral class\n"
+  "\n"
+  "Inputs: .vtk (VTK legacy ASCII unstructured grid, gmsh style), .mesh (MEDIT),\n"
+  "        .off .obj .stl .ply (closed surfaces, tetrahedralized with TetGen).\n"
+  "Options for surface inputs: --max-volume V, --radius-edge R (TetGen quality bound, default 2).\n"
+  "\n"
+  "Exit codes: 0 success, 2 usage error, 3 invalid or unreadable input,\n"
+  "            4 a stage failed, 5 an output file cannot be written.\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2) { std::cerr << usage; return hexmesh::EXIT_USAGE; }
+  const std::string command = argv[1];
+  if(command == "--help" || command == "-h" || command == "help") { std::cout << usage; return hexmesh::EXIT_OK; }
+  try {
+    if(command == "info") {
+      std::vector<std::string> options = hexmesh::input_options();
+      options.push_back("json");
+      return hexmesh::command_info(hexmesh::Arguments(argc, argv, 2, options, {}));
+    }
+    throw hexmesh::Usage_error("unknown command '" + command + "'");
+  } catch(const hexmesh::Usage_error& e) {
+    std::cerr << "hexmesh: " << e.what() << " (see hexmesh --help)\n";
+    return hexmesh::EXIT_USAGE;
+  } catch(const CGAL::Hexahedral_remeshing::Input_error& e) {
+    std::cerr << "hexmesh: " << e.what() << "\n";
+    return hexmesh::EXIT_INPUT;
+  } catch(const CGAL::Hexahedral_remeshing::Error& e) {
+    std::cerr << "hexmesh: " << e.what() << "\n";
+    return hexmesh::EXIT_OUTPUT;
+  } catch(const std::exception& e) {
+    std::cerr << "hexmesh: " << command << " failed: " << e.what() << "\n";
+    return hexmesh::EXIT_FAILURE_STAGE;
+  }
+}
