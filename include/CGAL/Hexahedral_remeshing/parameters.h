@@ -15,6 +15,12 @@ enum split_multi_boundary_tetrahedra_t { split_multi_boundary_tetrahedra };
 enum maximum_tetrahedron_volume_t { maximum_tetrahedron_volume };
 enum radius_edge_ratio_t { radius_edge_ratio };
 enum preserve_surface_triangles_t { preserve_surface_triangles };
+// frame field
+enum face_weights_t { face_weights };
+enum smoothing_t { smoothing };
+enum maximum_smoothing_iterations_t { maximum_smoothing_iterations };
+enum smoothing_tolerance_t { smoothing_tolerance };
+enum relaxation_tolerance_t { relaxation_tolerance };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -51,7 +57,22 @@ template <class T> unspecified_type maximum_tetrahedron_volume(const T& value);
 template <class T> unspecified_type radius_edge_ratio(const T& value);
 /// TetGen: keep every surface triangle as a boundary face (`bool`, default `false`).
 template <class T> unspecified_type preserve_surface_triangles(const T& value);
+/// Frame field: weights of the interior faces (`Face_weights`, default `Face_weights::UNIFORM`).
+template <class T> unspecified_type face_weights(const T& value);
+/// Frame field: run the L-BFGS smoothing (`bool`, default `true`).
+template <class T> unspecified_type smoothing(const T& value);
+/// Frame field: maximum number of L-BFGS iterations (`int`, default 2000).
+template <class T> unspecified_type maximum_smoothing_iterations(const T& value);
+/// Frame field: relative energy decrease below which the smoothing stops (`double`, default 1e-7).
+template <class T> unspecified_type smoothing_tolerance(const T& value);
+/// Frame field: relative residual of the relaxation's conjugate gradients (`double`, default 1e-6).
+template <class T> unspecified_type relaxation_tolerance(const T& value);
 #else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(face_weights)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_smoothing_iterations)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_tolerance)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(relaxation_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(preserve_surface_triangles)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)
