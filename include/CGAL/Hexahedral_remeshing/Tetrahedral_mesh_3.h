@@ -24,13 +24,21 @@ template <class Index>
 class Index_range
 {
 public:
+  /// The range `[b, e)`.
   Index_range(const Index* b, const Index* e) : m_begin(b), m_end(e) {}
+  /// Pointer to the first index.
   const Index* begin() const { return m_begin; }
+  /// Pointer past the last index.
   const Index* end() const { return m_end; }
+  /// Number of indices.
   std::size_t size() const { return std::size_t(m_end - m_begin); }
+  /// True if the range holds no index.
   bool empty() const { return m_begin == m_end; }
+  /// The `i`-th index. \pre `i < size()`
   Index operator[](std::size_t i) const { return m_begin[i]; }
+  /// The first index. \pre `!empty()`
   Index front() const { return *m_begin; }
+  /// The last index. \pre `!empty()`
   Index back() const { return *(m_end - 1); }
 private:
   const Index* m_begin;
@@ -74,6 +82,7 @@ public:
 
   /// \name Vertices
   /// @{
+
   /// Number of vertices (input vertices first, then the ones added by preprocessing).
   std::size_t number_of_vertices() const { return m_points.size(); }
   /// Number of vertices of the input; vertex `v < number_of_input_vertices()` is input vertex `v`.
@@ -90,6 +99,7 @@ public:
 
   /// \name Tetrahedra
   /// @{
+
   /// Number of tetrahedra.
   std::size_t number_of_tetrahedra() const { return m_tets.size(); }
   /// The four vertices of `t`, positively oriented.
@@ -116,6 +126,7 @@ public:
 
   /// \name Faces
   /// @{
+
   /// Number of faces (triangles of the tetrahedra, each counted once).
   std::size_t number_of_faces() const { return m_face_vertices.size(); }
   /// Vertices of `f`, oriented outward from `face_tetrahedra(f)[0]` (hence outward from the mesh on the boundary).
@@ -131,6 +142,7 @@ public:
   /// \name Boundary triangles
   /// Boundary triangles are the boundary faces, numbered `0 .. number_of_boundary_triangles()-1`.
   /// @{
+
   /// Number of boundary triangles.
   std::size_t number_of_boundary_triangles() const { return m_bt_face.size(); }
   /// The face of boundary triangle `b`.
@@ -163,6 +175,7 @@ public:
 
   /// \name Edges
   /// @{
+
   /// Number of edges.
   std::size_t number_of_edges() const { return m_edge_vertices.size(); }
   /// Endpoints `(v0, v1)` of `e`; the ring of `e` turns counter-clockwise about `p(v1) - p(v0)`.
@@ -195,6 +208,7 @@ public:
 
   /// \name Features given by the input
   /// @{
+
   /// Corner vertices (C3t3 corners, gmsh point cells).
   const std::vector<Index>& corners() const { return m_corners; }
   /// Number of distinct feature curve ids.

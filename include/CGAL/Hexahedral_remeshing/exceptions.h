@@ -16,6 +16,7 @@ namespace Hexahedral_remeshing {
 class Error : public std::runtime_error
 {
 public:
+  /// An error with the complete message `what`.
   explicit Error(const std::string& what) : std::runtime_error(what) {}
 };
 

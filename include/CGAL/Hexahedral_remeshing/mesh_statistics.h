@@ -19,18 +19,48 @@ namespace Hexahedral_remeshing {
 /// Statistics of a `Tetrahedral_mesh_3`, as printed by `hexmesh info`.
 struct Mesh_statistics
 {
-  std::size_t vertices = 0, input_vertices = 0, tetrahedra = 0, faces = 0, edges = 0;
-  std::size_t boundary_triangles = 0, boundary_edges = 0, boundary_vertices = 0;
-  std::size_t components = 0, boundary_components = 0;
+  /// Number of vertices, including the ones added by preprocessing.
+  std::size_t vertices = 0;
+  /// Number of vertices of the input.
+  std::size_t input_vertices = 0;
+  /// Number of tetrahedra (after preprocessing).
+  std::size_t tetrahedra = 0;
+  /// Number of faces (triangles of the tetrahedra, each counted once).
+  std::size_t faces = 0;
+  /// Number of edges.
+  std::size_t edges = 0;
+  /// Number of boundary triangles.
+  std::size_t boundary_triangles = 0;
+  /// Number of boundary edges.
+  std::size_t boundary_edges = 0;
+  /// Number of boundary vertices.
+  std::size_t boundary_vertices = 0;
+  /// Number of connected components of the mesh (through faces).
+  std::size_t components = 0;
+  /// Number of connected components of the boundary surface.
+  std::size_t boundary_components = 0;
+  /// Euler characteristic `V - E + F` of the boundary surface.
   long boundary_euler_characteristic = 0;
   /// Sum of the genera of the boundary components, from `chi = 2 c - 2 g`.
   long boundary_genus = 0;
-  std::size_t split_tetrahedra = 0, reoriented_tetrahedra = 0;
-  std::size_t feature_edges = 0, feature_curves = 0, surface_patches = 0, corners = 0;
+  /// Number of tetrahedra split 1-to-4 by preprocessing.
+  std::size_t split_tetrahedra = 0;
+  /// Number of inverted input tetrahedra that were re-oriented.
+  std::size_t reoriented_tetrahedra = 0;
+  /// Number of edges tagged with a feature curve by the input.
+  std::size_t feature_edges = 0;
+  /// Number of distinct feature curve ids of the input.
+  std::size_t feature_curves = 0;
+  /// Number of distinct surface patch ids of the input.
+  std::size_t surface_patches = 0;
+  /// Number of corner vertices of the input.
+  std::size_t corners = 0;
   /// Number of boundary edges per exact class `round(2 phi / pi)`, 0 to 4.
   std::array<std::size_t, 5> dihedral_class_histogram{{0, 0, 0, 0, 0}};
-  /// Extreme boundary dihedral angles, in degrees.
-  double min_dihedral_angle_degrees = 0, max_dihedral_angle_degrees = 0;
+  /// Smallest boundary dihedral angle, in degrees (0 without boundary edge).
+  double min_dihedral_angle_degrees = 0;
+  /// Largest boundary dihedral angle, in degrees (0 without boundary edge).
+  double max_dihedral_angle_degrees = 0;
 };
 
 /// \ingroup PkgHexahedralRemeshingRef

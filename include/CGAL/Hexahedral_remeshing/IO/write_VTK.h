@@ -23,8 +23,11 @@ namespace IO {
 /// (`SCALARS`) or 3 (`VECTORS`), `values` holds `components` doubles per element.
 struct VTK_array
 {
+  /// Name of the array in the file (no whitespace).
   std::string name;
+  /// Number of components per element: 1 (written as `SCALARS`) or 3 (`VECTORS`).
   int components = 1;
+  /// The values, `components` consecutive doubles per element, in element order.
   std::vector<double> values;
 };
 
