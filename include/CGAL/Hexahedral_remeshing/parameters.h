@@ -15,6 +15,12 @@ enum split_multi_boundary_tetrahedra_t { split_multi_boundary_tetrahedra };
 enum maximum_tetrahedron_volume_t { maximum_tetrahedron_volume };
 enum radius_edge_ratio_t { radius_edge_ratio };
 enum preserve_surface_triangles_t { preserve_surface_triangles };
+enum valence_heuristic_t { valence_heuristic };
+enum prescribed_edge_valences_t { prescribed_edge_valences };
+enum prescribed_curve_valences_t { prescribed_curve_valences };
+enum number_of_refinements_t { number_of_refinements };
+enum energy_tolerance_t { energy_tolerance };
+enum maximum_number_of_queue_pops_t { maximum_number_of_queue_pops };
 // frame field
 enum face_weights_t { face_weights };
 enum smoothing_t { smoothing };
@@ -77,6 +83,12 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(preserve_surface_triangles)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(radius_edge_ratio)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(valence_heuristic)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(prescribed_edge_valences)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(prescribed_curve_valences)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(number_of_refinements)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(energy_tolerance)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_number_of_queue_pops)
 #endif
 
 } // namespace parameters
