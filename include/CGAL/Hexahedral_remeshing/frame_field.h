@@ -1,0 +1,191 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_H
+#define CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field_initialization.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field_smoothing.h>
+
+#include <Eigen/Dense>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Weights of the interior faces in the smoothness energy.
+enum class Face_weights
+{
+  UNIFORM,            ///< every interior face weighs 1
+  AREA_OVER_DISTANCE  ///< face area over the distance of the two tet centroids, normalized to mean 1 (graded meshes)
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Default visitor of the frame-field stages: every hook does nothing. Derive from it and pass it
+/// with the named parameter `visitor` to follow the progress.
+struct Frame_field_visitor
+{
+  /// Called when a stage starts (`"setup"`, `"initialization"`, `"smoothing"`).
+  void start_stage(const std::string& /*stage*/) {}
+  /// Called when a stage ends, with its duration in seconds.
+  void end_stage(const std::string& /*stage*/, double /*seconds*/) {}
+  /// Called after each round of L-BFGS iterations with the smoothness energy and the total
+  /// number of iterations so far; the energy never increases from one call to the next.
+  void smoothing_progress(double /*energy*/, int /*iterations*/) {}
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Outcome of `compute_frame_field()`.
+struct Frame_field_result
+{
+  /// Smoothness energy `sum_f w_f |q_i - q_j|^2` of the projected relaxation.
+  double initial_energy = 0;
+  /// Smoothness energy of the returned frames.
+  double energy = 0;
+  /// Conjugate-gradient iterations of the relaxation.
+  int relaxation_iterations = 0;
+  /// Final relative residual of the relaxation.
+  double relaxation_residual = 0;
+  /// L-BFGS iterations of the smoothing.
+  int smoothing_iterations = 0;
+  /// Seconds spent building the problem.
+  double setup_seconds = 0;
+  /// Seconds of the relaxation and projection.
+  double initialization_seconds = 0;
+  /// Seconds of the L-BFGS smoothing.
+  double smoothing_seconds = 0;
+  /// Total seconds.
+  double seconds = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Unit outward normals of the boundary triangles, indexed by boundary triangle: passed as the
+/// directions of `compute_frame_field()`, they give the classic normal-aligned frame field.
+template <class Traits>
+std::vector<Eigen::Vector3d> boundary_triangle_unit_normals(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  std::vector<Eigen::Vector3d> normals(mesh.number_of_boundary_triangles());
+  for(std::size_t b = 0; b < normals.size(); ++b) {
+    const auto n = mesh.boundary_triangle_normal(typename Tetrahedral_mesh_3<Traits>::Index(b));
+    normals[b] = Eigen::Vector3d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())).normalized();
+  }
+  return normals;
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Computes a smooth octahedral frame field, one frame per tetrahedron, following Ray et al. 2016
+/// with the boundary alignment of Desobry et al.: each tetrahedron with a boundary face keeps one
+/// axis exactly on that face's direction (the direction constraint `v_i` of
+/// `compute_boundary_direction_constraints()`, or the normal for the classic field).
+///
+/// Stages: convex relaxation in L4 spherical harmonics with exact elimination of the constraints
+/// (matrix-free conjugate gradients), projection to the closest frames, then L-BFGS on rotation
+/// parameters until the relative decrease of the energy stalls. Deterministic: the result does not
+/// depend on the number of threads.
+///
+/// \param mesh the tetrahedral mesh; each tetrahedron must have at most one boundary face
+///        (the default preprocessing of `build_tetrahedral_mesh()` ensures it)
+/// \param boundary_directions one direction per boundary triangle (need not be unit)
+/// \param frames output: one rotation per tetrahedron, its columns are the three axes
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{face_weights}
+///     \cgalParamDescription{weights of the interior faces}
+///     \cgalParamType{`Face_weights`}
+///     \cgalParamDefault{`Face_weights::UNIFORM`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smoothing}
+///     \cgalParamDescription{run the L-BFGS smoothing after the relaxation}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_smoothing_iterations}
+///     \cgalParamDescription{maximum number of L-BFGS iterations}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{`2000`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_tolerance}
+///     \cgalParamDescription{the smoothing stops when an iteration decreases the energy by less than
+///       this fraction}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-7`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{relaxation_tolerance}
+///     \cgalParamDescription{relative residual at which the conjugate gradients of the relaxation stop}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-6`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress callbacks}
+///     \cgalParamType{a class with the member functions of `Frame_field_visitor`}
+///     \cgalParamDefault{`Frame_field_visitor()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Error if the directions do not match the boundary triangles or a tetrahedron has two
+///         boundary faces.
+template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
+                                       const std::vector<Eigen::Vector3d>& boundary_directions,
+                                       std::vector<Eigen::Matrix3d>& frames,
+                                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  const Face_weights weights = choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::UNIFORM);
+  const bool smooth = choose_parameter(get_parameter(np, internal_np::smoothing), true);
+  const int max_iterations = choose_parameter(get_parameter(np, internal_np::maximum_smoothing_iterations), 2000);
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-7);
+  const double cg_tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-6);
+  Frame_field_visitor default_visitor;
+  auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  typedef std::chrono::steady_clock Clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  Frame_field_result result;
+  const auto start = Clock::now();
+
+  visitor.start_stage("setup");
+  auto t = Clock::now();
+  const internal::Frame_field_problem problem = internal::make_frame_field_problem(
+    mesh, boundary_directions,
+    weights == Face_weights::UNIFORM ? internal::Face_weighting::UNIFORM : internal::Face_weighting::AREA_OVER_DISTANCE);
+  internal::Frame_field_relaxation relaxation(problem);
+  result.setup_seconds = seconds_since(t);
+  visitor.end_stage("setup", result.setup_seconds);
+
+  visitor.start_stage("initialization");
+  t = Clock::now();
+  const std::vector<internal::Vector9> q =
+    relaxation.solve(cg_tolerance, 20000, result.relaxation_iterations, result.relaxation_residual);
+  frames = relaxation.project(q);
+  result.initial_energy = internal::frame_field_energy(problem, frames);
+  result.initialization_seconds = seconds_since(t);
+  visitor.end_stage("initialization", result.initialization_seconds);
+
+  result.energy = result.initial_energy;
+  if(smooth) {
+    visitor.start_stage("smoothing");
+    t = Clock::now();
+    internal::Frame_field_smoother smoother(problem, frames);
+    result.energy = smoother.minimize(max_iterations, tolerance,
+                                      [&](double e, int it) { visitor.smoothing_progress(e, it); },
+                                      result.smoothing_iterations);
+    result.smoothing_seconds = seconds_since(t);
+    visitor.end_stage("smoothing", result.smoothing_seconds);
+  }
+  result.seconds = seconds_since(start);
+  return result;
+}
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_H

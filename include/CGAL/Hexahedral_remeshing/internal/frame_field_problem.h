@@ -1,0 +1,105 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_PROBLEM_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_PROBLEM_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// The data every frame-field solver shares: the dual graph (interior faces with their two tets and
+// a weight), the per-tet faces for gathers, and the alignment direction of each constrained tet.
+// Gathers per tet (instead of scatters per face) keep parallel loops deterministic.
+struct Frame_field_problem
+{
+  typedef std::uint32_t Index;
+  static constexpr Index none = Index(-1);
+
+  std::size_t number_of_tets = 0;
+  std::vector<std::array<Index, 2> > face_tets;    // interior faces only
+  std::vector<double> face_weight;
+  std::vector<std::array<Index, 4> > tet_faces;    // interior face slots of each tet (none if boundary)
+  std::vector<Index> constrained_direction;        // per tet: index into directions, or none
+  std::vector<Eigen::Vector3d> directions;         // unit alignment directions
+
+  bool is_constrained(Index t) const { return constrained_direction[t] != none; }
+  const Eigen::Vector3d& direction(Index t) const { return directions[constrained_direction[t]]; }
+};
+
+enum class Face_weighting { UNIFORM, AREA_OVER_DISTANCE };
+
+template <class Traits>
+Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& mesh,
+                                             const std::vector<Eigen::Vector3d>& boundary_directions,
+                                             Face_weighting weighting)
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  Frame_field_problem p;
+  const std::size_t nt = mesh.number_of_tetrahedra();
+  if(boundary_directions.size() != mesh.number_of_boundary_triangles())
+    throw Error("frame field: " + std::to_string(boundary_directions.size()) + " boundary directions given for " +
+                std::to_string(mesh.number_of_boundary_triangles()) + " boundary triangles");
+  p.number_of_tets = nt;
+  p.tet_faces.assign(nt, {Frame_field_problem::none, Frame_field_problem::none, Frame_field_problem::none,
+                          Frame_field_problem::none});
+  p.constrained_direction.assign(nt, Frame_field_problem::none);
+  p.directions.resize(boundary_directions.size());
+  for(std::size_t b = 0; b < boundary_directions.size(); ++b) {
+    const double n = boundary_directions[b].norm();
+    if(!(n > 0) || !std::isfinite(n)) throw Error("frame field: boundary direction " + std::to_string(b) + " is not a valid vector");
+    p.directions[b] = boundary_directions[b] / n;
+  }
+  std::vector<Index> interior_index(mesh.number_of_faces(), Frame_field_problem::none);
+  for(Index f = 0; f < mesh.number_of_faces(); ++f) {
+    const auto& ft = mesh.face_tetrahedra(f);
+    if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) {
+      const Index b = mesh.face_boundary_triangle(f);
+      if(p.constrained_direction[ft[0]] != Frame_field_problem::none)
+        throw Error("frame field: tetrahedron " + std::to_string(ft[0]) +
+                    " has several boundary faces; build the mesh with split_multi_boundary_tetrahedra(true)");
+      p.constrained_direction[ft[0]] = b;
+      continue;
+    }
+    interior_index[f] = Index(p.face_tets.size());
+    p.face_tets.push_back({ft[0], ft[1]});
+    double w = 1.0;
+    if(weighting == Face_weighting::AREA_OVER_DISTANCE) {
+      const auto& v = mesh.face_vertices(f);
+      const double area = std::sqrt(CGAL::to_double(CGAL::squared_area(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]))));
+      auto centroid = [&](Index t) {
+        const auto& tv = mesh.tetrahedron_vertices(t);
+        return CGAL::centroid(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3]));
+      };
+      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(centroid(ft[0]), centroid(ft[1]))));
+      w = area / d;
+    }
+    p.face_weight.push_back(w);
+  }
+  if(weighting == Face_weighting::AREA_OVER_DISTANCE && !p.face_weight.empty()) {
+    // normalize so that the mean weight is 1: energies are then comparable between weightings
+    double sum = 0;
+    for(double w : p.face_weight) sum += w;
+    const double scale = double(p.face_weight.size()) / sum;
+    for(double& w : p.face_weight) w *= scale;
+  }
+  for(Index t = 0; t < nt; ++t)
+    for(int i = 0; i < 4; ++i) p.tet_faces[t][i] = interior_index[mesh.tetrahedron_face(t, i)];
+  return p;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_PROBLEM_H

@@ -1,0 +1,205 @@
+// Tests of the frame field, the matchings, the singularity graph and the achieved boundary
+// valences, on the oracles of the design guide (section 7).
+#include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
+#include <CGAL/Hexahedral_remeshing/frame_field.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace HR = CGAL::Hexahedral_remeshing;
+typedef HR::Tetrahedral_mesh_3<> Mesh;
+typedef Mesh::Index Index;
+typedef Mesh::Point_3 Point;
+
+namespace {
+
+const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
+const std::string shared_data = HEXREM_SHARED_DATA_DIR;
+
+Mesh load(const std::string& file, double max_volume = 0)
+{
+  Mesh m;
+  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::maximum_tetrahedron_volume(max_volume));
+  return m;
+}
+
+Mesh from_soup(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4> >& tets, bool split = true)
+{
+  HR::Tetrahedral_soup_3<Point> soup;
+  soup.points = points;
+  soup.tetrahedra = tets;
+  Mesh m;
+  HR::build_tetrahedral_mesh(soup, m, HR::parameters::split_multi_boundary_tetrahedra(split));
+  return m;
+}
+
+Eigen::Vector3d to_eigen(const Mesh::Vector_3& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+
+Eigen::Vector3d centroid(const Mesh& m, Index t)
+{
+  const auto& v = m.tetrahedron_vertices(t);
+  return to_eigen(CGAL::centroid(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])) - CGAL::ORIGIN);
+}
+
+struct Field
+{
+  std::vector<Eigen::Vector3d> directions;
+  std::vector<Eigen::Matrix3d> frames;
+  HR::Frame_field_result result;
+  HR::Matchings matchings;
+  HR::Singularity_graph graph;
+  HR::Boundary_valences valences;
+};
+
+// The classic normal-aligned field with its analysis; the prescribed valences are the geometric classes.
+Field normal_aligned_field(const Mesh& m)
+{
+  Field f;
+  f.directions = HR::boundary_triangle_unit_normals(m);
+  f.result = HR::compute_frame_field(m, f.directions, f.frames);
+  f.matchings = HR::compute_matchings(m, f.frames);
+  f.graph = HR::compute_singularity_graph(m, f.frames, f.matchings);
+  std::vector<int> geometric(m.number_of_edges(), -1);
+  for(Index e : m.boundary_edges()) geometric[e] = HR::boundary_edge_dihedral_class(m, e);
+  f.valences = HR::compute_achieved_boundary_valences(m, f.frames, f.matchings, f.directions, geometric);
+  return f;
+}
+
+// The tets around the edge (0,0,0)-(0,0,1): a wheel of n tets.
+Mesh wheel(int n)
+{
+  std::vector<Point> p = {Point(0, 0, 0), Point(0, 0, 1)};
+  std::vector<std::array<std::size_t, 4> > tets;
+  for(int k = 0; k < n; ++k) p.push_back(Point(std::cos(2 * CGAL_PI * k / n), std::sin(2 * CGAL_PI * k / n), 0.5));
+  for(int k = 0; k < n; ++k) tets.push_back({0, 1, std::size_t(2 + k), std::size_t(2 + (k + 1) % n)});
+  return from_soup(p, tets, false);
+}
+
+} // namespace
+
+TEST(Singularities, AnalyticFieldsAroundAnEdgeGiveValence3And5)
+{
+  for(int n : {8, 13}) {
+    const Mesh m = wheel(n);
+    const Index axis = m.find_edge(0, 1);
+    ASSERT_FALSE(m.is_boundary_edge(axis));
+    for(int sign : {+1, -1}) {
+      std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra());
+      for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+        const Eigen::Vector3d c = centroid(m, t);
+        double theta = std::atan2(c.y(), c.x());
+        if(theta < 0) theta += 2 * CGAL_PI;
+        frames[t] = Eigen::AngleAxisd(sign * theta / 4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      }
+      const HR::Matchings mt = HR::compute_matchings(m, frames);
+      const HR::Singularity_graph g = HR::compute_singularity_graph(m, frames, mt);
+      EXPECT_EQ(g.edge_valence[axis], sign > 0 ? 3 : 5) << n << " tets, sign " << sign;
+      EXPECT_EQ(sign > 0 ? g.valence3_edges : g.valence5_edges, 1u);
+      EXPECT_EQ(g.improper_edges, 0u);
+      ASSERT_EQ(g.curves.size(), 1u);
+      EXPECT_EQ(g.curves[0].edges, std::vector<std::uint32_t>{axis});
+      // a constant field is regular
+      std::vector<Eigen::Matrix3d> constant(m.number_of_tetrahedra(), Eigen::Matrix3d::Identity());
+      const HR::Matchings mc = HR::compute_matchings(m, constant);
+      EXPECT_EQ(HR::compute_singularity_graph(m, constant, mc).edge_valence[axis], 4);
+    }
+  }
+}
+
+TEST(FrameField, CubeIsPerfectlySmoothAndRegular)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.002);
+  ASSERT_GT(m.number_of_tetrahedra(), 500u);
+  const Field f = normal_aligned_field(m);
+  EXPECT_LT(f.result.energy, 1e-10);
+  EXPECT_EQ(f.graph.valence3_edges + f.graph.valence5_edges + f.graph.improper_edges, 0u);
+  // k = 1 on the edges of the 12 cube edges, 2 elsewhere: exactly the geometric classes
+  EXPECT_EQ(f.valences.mismatched, 0u);
+  EXPECT_EQ(f.valences.matched, m.boundary_edges().size());
+  EXPECT_GE(f.valences.histogram[1], 12u);
+  EXPECT_EQ(f.valences.histogram[1] + f.valences.histogram[2], m.boundary_edges().size());
+  EXPECT_LT(f.valences.max_deviation, 1e-9);
+  // every constrained tet keeps an axis exactly on its direction
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b) {
+    const Eigen::Vector3d c = f.frames[m.boundary_triangle_tetrahedron(b)].transpose() * f.directions[b];
+    EXPECT_NEAR(c.cwiseAbs().maxCoeff(), 1.0, 1e-12);
+  }
+}
+
+TEST(FrameField, CylinderHasFourValence3CurvesAlongTheAxis)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.004);
+  const Field f = normal_aligned_field(m);
+  EXPECT_EQ(f.valences.mismatched, 0u); // rims k = 1, elsewhere 2
+  EXPECT_EQ(f.graph.valence5_edges, 0u);
+  EXPECT_EQ(f.graph.improper_edges, 0u);
+  EXPECT_EQ(f.graph.number_of_curves(3), 4u);
+  // each curve goes from cap to cap, roughly parallel to the axis
+  for(const HR::Singular_curve& c : f.graph.curves) {
+    ASSERT_EQ(c.valence, 3);
+    const double z0 = m.point(c.vertices.front()).z(), z1 = m.point(c.vertices.back()).z();
+    EXPECT_NEAR(std::min(z0, z1), 0.0, 1e-12);
+    EXPECT_NEAR(std::max(z0, z1), 2.0, 1e-12);
+  }
+  EXPECT_TRUE(f.graph.dangling_vertices.empty());
+  EXPECT_TRUE(f.graph.zipper_vertices.empty());
+}
+
+TEST(FrameField, AcuteEdgeBreaksTheNormalAlignedField)
+{
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  const Field f = normal_aligned_field(m);
+  std::size_t zero = 0;
+  for(Index e : m.boundary_edges())
+    if(HR::boundary_edge_dihedral_class(m, e) == 0) {
+      EXPECT_EQ(f.valences.achieved[e], 0); // the failure the paper fixes
+      ++zero;
+    }
+  EXPECT_EQ(zero, 8u);
+  EXPECT_EQ(f.valences.histogram[0], 8u);
+}
+
+TEST(FrameField, SmoothingNeverIncreasesTheEnergy)
+{
+  struct Recorder : HR::Frame_field_visitor
+  {
+    std::vector<double> energies;
+    std::vector<std::string> stages;
+    void start_stage(const std::string& s) { stages.push_back(s); }
+    void smoothing_progress(double e, int) { energies.push_back(e); }
+  } recorder;
+  const Mesh m = load(example_data + "/cylinder.off", 0.004);
+  std::vector<Eigen::Matrix3d> frames;
+  const HR::Frame_field_result r = HR::compute_frame_field(m, HR::boundary_triangle_unit_normals(m), frames,
+                                                           CGAL::parameters::visitor(std::ref(recorder)));
+  EXPECT_EQ(recorder.stages, (std::vector<std::string>{"setup", "initialization", "smoothing"}));
+  ASSERT_FALSE(recorder.energies.empty());
+  double previous = r.initial_energy;
+  for(double e : recorder.energies) {
+    EXPECT_LE(e, previous);
+    previous = e;
+  }
+  EXPECT_LT(r.energy, r.initial_energy);
+  EXPECT_DOUBLE_EQ(r.energy, recorder.energies.back());
+  // the reported energy is the energy of the returned frames
+  HR::Tetrahedral_mesh_3<> copy = m;
+  auto p = HR::internal::make_frame_field_problem(copy, HR::boundary_triangle_unit_normals(m), HR::internal::Face_weighting::UNIFORM);
+  EXPECT_NEAR(HR::internal::frame_field_energy(p, frames), r.energy, 1e-9 * r.energy);
+}
+
+TEST(FrameField, BadInputsAreRejected)
+{
+  const Mesh m = load(example_data + "/cube.off");
+  std::vector<Eigen::Matrix3d> frames;
+  std::vector<Eigen::Vector3d> too_few(3, Eigen::Vector3d::UnitX());
+  EXPECT_THROW(HR::compute_frame_field(m, too_few, frames), HR::Error);
+  std::vector<Eigen::Vector3d> zero(m.number_of_boundary_triangles(), Eigen::Vector3d::Zero());
+  EXPECT_THROW(HR::compute_frame_field(m, zero, frames), HR::Error);
+  Mesh unsplit;
+  HR::IO::read_tetrahedral_mesh(example_data + "/cube.off", unsplit, HR::parameters::split_multi_boundary_tetrahedra(false));
+  if(unsplit.number_of_split_tetrahedra() == 0 && unsplit.number_of_tetrahedra() == m.number_of_tetrahedra()) return;
+  EXPECT_THROW(HR::compute_frame_field(unsplit, HR::boundary_triangle_unit_normals(unsplit), frames), HR::Error);
+}
