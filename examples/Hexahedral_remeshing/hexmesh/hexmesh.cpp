@@ -5,6 +5,7 @@
 // hexmesh: command-line front end of the Hexahedral_remeshing package.
 #include "cli_common.h"
 #include "command_info.h"
+#include "command_constraints.h"
 
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
@@ -18,6 +19,15 @@ const char* usage =
   "\n"
   "Commands:\n"
   "  info IN [--json FILE]     mesh statistics, boundary edges by exact dihedral class\n"
+  "  constraints IN [--heuristic NAME] [--valences FILE] [--json FILE] [--vtk FILE]\n"
+  "              [--refinements N] [--save-valences FILE]\n"
+  "                            boundary edge valences and boundary direction constraints:\n"
+  "                            NAME is low_angle (default), geometric, ambiguous or cap_two;\n"
+  "                            FILE for --valences has lines 'a b k' (0-based input vertices of a\n"
+  "                            boundary edge, prescribed valence 1..6), overriding the heuristic;\n"
+  "                            --vtk writes the boundary triangles with n, v, E_i as cell data;\n"
+  "                            --save-valences writes the chosen valences in the 'a b k' format.\n"
+  "                            Warnings (one line per kind) for valence-0 edges and E_i >= pi/4.\n"
   "\n"
   "Inputs: .vtk (VTK legacy ASCII unstructured grid, gmsh style), .mesh (MEDIT),\n"
   "        .off .obj .stl .ply (closed surfaces, tetrahedralized with TetGen).\n"
@@ -39,6 +49,8 @@ int main(int argc, char** argv)
       options.push_back("json");
       return hexmesh::command_info(hexmesh::Arguments(argc, argv, 2, options, {}));
     }
+    if(command == "constraints")
+      return hexmesh::command_constraints(hexmesh::Arguments(argc, argv, 2, hexmesh::constraints_options(), {}));
     throw hexmesh::Usage_error("unknown command '" + command + "'");
   } catch(const hexmesh::Usage_error& e) {
     std::cerr << "hexmesh: " << e.what() << " (see hexmesh --help)\n";

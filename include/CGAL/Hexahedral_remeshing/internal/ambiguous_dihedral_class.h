@@ -1,0 +1,164 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_AMBIGUOUS_DIHEDRAL_CLASS_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_AMBIGUOUS_DIHEDRAL_CLASS_H
+
+#include <CGAL/Hexahedral_remeshing/internal/dihedral_class.h>
+
+#include <CGAL/Exact_rational.h>
+#ifdef CGAL_USE_GMP
+#include <CGAL/Gmpq.h>
+#endif
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Uncertain.h>
+
+#include <gmp.h>
+#include <mpfr.h>
+
+#include <array>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// Exact class round(2 phi / pi + 0.05) of the "ambiguous" heuristic (Desobry et al., Sec. 5.2).
+//
+// With m = round(2 phi / pi) the exact class of `dihedral_class_exact()` (ties up), write
+// phi = m pi/2 + psi with psi in [-pi/4, pi/4).  Then round(2 phi / pi + 0.05) is m + 1 if
+// psi >= theta0 = 0.45 pi/2 (81 pi/400, 40.5 degrees), and m otherwise: the bias moves the rounding
+// thresholds from (m + 1/2) pi/2 down to (m + 0.45) pi/2.
+//
+// The test psi >= theta0 is decided exactly for the double coordinates of the four points:
+// with s = <n_i x n_j, e>, c = <n_i, n_j> and e2 = |e|^2 (the polynomials of dihedral_class.h),
+// (cos phi, sin phi) is proportional to (X0, Y0) = (-c |e|, s).  Rotating by -m pi/2 gives
+// (X, Y) proportional to (cos psi, sin psi) with X > 0, and
+//     psi >= theta0  <=>  Y > 0  and  Y^2 >= T X^2,   T = tan^2(theta0),
+// where Y^2 and X^2 are s^2 or c^2 e2, polynomials of the coordinates (|e| appears squared only).
+// T is irrational (tan^2 of a rational multiple of pi is rational only for 0, 1/3, 1, 3, by
+// Niven's theorem applied to cos(2 theta0) = (1 - T) / (1 + T)), so the comparison never ties.
+// Decision: an interval filter with a double enclosure of T; if it fails, Y^2 and X^2 are
+// evaluated exactly (Exact_rational) and compared with enclosures of T computed by MPFR with
+// directed rounding at increasing precision, until the enclosure excludes the rational Y^2 / X^2
+// (this terminates because T is irrational).
+
+// Enclosure [lo, hi] of T = tan^2(81 pi / 400) computed with MPFR at `bits` bits, directed rounding:
+// pi is enclosed, then tan is increasing on (0, pi/2) and squaring is increasing on positives.
+inline void ambiguous_threshold_enclosure(mpfr_prec_t bits, mpfr_t lo, mpfr_t hi)
+{
+  mpfr_t a;
+  mpfr_init2(a, bits);
+  mpfr_const_pi(lo, MPFR_RNDD);
+  mpfr_mul_ui(lo, lo, 81, MPFR_RNDD);
+  mpfr_div_ui(lo, lo, 400, MPFR_RNDD);
+  mpfr_tan(lo, lo, MPFR_RNDD);
+  mpfr_sqr(lo, lo, MPFR_RNDD);
+  mpfr_const_pi(a, MPFR_RNDU);
+  mpfr_mul_ui(a, a, 81, MPFR_RNDU);
+  mpfr_div_ui(a, a, 400, MPFR_RNDU);
+  mpfr_tan(a, a, MPFR_RNDU);
+  mpfr_sqr(hi, a, MPFR_RNDU);
+  mpfr_clear(a);
+}
+
+// Double enclosure of T, for the interval filter.
+inline const Interval_nt<false>& ambiguous_threshold_interval()
+{
+  static const Interval_nt<false> t = [] {
+    mpfr_t lo, hi;
+    mpfr_init2(lo, 128);
+    mpfr_init2(hi, 128);
+    ambiguous_threshold_enclosure(128, lo, hi);
+    const double l = mpfr_get_d(lo, MPFR_RNDD), h = mpfr_get_d(hi, MPFR_RNDU);
+    mpfr_clear(lo);
+    mpfr_clear(hi);
+    return Interval_nt<false>(l, h);
+  }();
+  return t;
+}
+
+#ifdef CGAL_USE_GMPXX
+inline mpq_srcptr mpq_of(const ::mpq_class& q) { return q.get_mpq_t(); }
+#endif
+#ifdef CGAL_USE_GMP
+inline mpq_srcptr mpq_of(const Gmpq& q) { return q.mpq(); }
+#endif
+
+// Exact comparison of the rational a / b (b > 0) with T: true if a / b >= T (never equal).
+template <class Rational>
+bool ratio_at_least_ambiguous_threshold(const Rational& a, const Rational& b)
+{
+  mpq_t r;
+  mpq_init(r);
+  mpq_div(r, mpq_of(a), mpq_of(b));
+  bool result = false;
+  for(mpfr_prec_t bits = 128;; bits *= 2) {
+    mpfr_t lo, hi;
+    mpfr_init2(lo, bits);
+    mpfr_init2(hi, bits);
+    ambiguous_threshold_enclosure(bits, lo, hi);
+    const int below_lo = mpfr_cmp_q(lo, r);   // > 0: r < lo
+    const int above_hi = mpfr_cmp_q(hi, r);   // < 0: r > hi
+    mpfr_clear(lo);
+    mpfr_clear(hi);
+    if(below_lo > 0) { result = false; break; }
+    if(above_hi < 0) { result = true; break; }
+  }
+  mpq_clear(r);
+  return result;
+}
+
+// Y^2 and X^2 of the comment above, and the sign of Y, for class m.
+template <class FT>
+void ambiguous_rotated_squares(const std::array<double, 12>& xyz, int m, FT& y2, FT& x2, Sign& sign_y)
+{
+  const FT px(xyz[0]), py(xyz[1]), pz(xyz[2]);
+  const FT qx(xyz[3]), qy(xyz[4]), qz(xyz[5]);
+  const FT ax(xyz[6]), ay(xyz[7]), az(xyz[8]);
+  const FT bx(xyz[9]), by(xyz[10]), bz(xyz[11]);
+  const FT ex = qx - px, ey = qy - py, ez = qz - pz;
+  const FT apx = ax - px, apy = ay - py, apz = az - pz;
+  const FT bqx = bx - qx, bqy = by - qy, bqz = bz - qz;
+  const FT nix = ey * apz - ez * apy, niy = ez * apx - ex * apz, niz = ex * apy - ey * apx;
+  const FT njx = -ey * bqz + ez * bqy, njy = -ez * bqx + ex * bqz, njz = -ex * bqy + ey * bqx;
+  const FT cx = niy * njz - niz * njy, cy = niz * njx - nix * njz, cz = nix * njy - niy * njx;
+  const FT s = cx * ex + cy * ey + cz * ez;
+  const FT c = nix * njx + niy * njy + niz * njz;
+  const FT e2 = ex * ex + ey * ey + ez * ez;
+  // (X0, Y0) = (-c|e|, s); rotation by -m pi/2: m = 0, 4: (X0, Y0); 1: (Y0, -X0); 2: (-X0, -Y0); 3: (-Y0, X0)
+  const bool y_is_s = (m % 2 == 0);
+  const Sign sign_base = CGAL::sign(y_is_s ? s : c); // throws Uncertain_conversion_exception with intervals
+  sign_y = (m % 4 < 2) ? sign_base : CGAL::opposite(sign_base);
+  if(y_is_s) { y2 = s * s; x2 = c * c * e2; }
+  else { y2 = c * c * e2; x2 = s * s; }
+}
+
+// round(2 phi / pi + 0.05) for the edge described by `xyz` (same layout as dihedral_class_exact()).
+inline int ambiguous_dihedral_class_exact(const std::array<double, 12>& xyz)
+{
+  const int m = dihedral_class_exact(xyz);
+  if(m == 4) return 4; // phi >= 7 pi/4: psi < 0, the bias cannot reach the next class (and 2 phi/pi < 4.05)
+  const Interval_nt<false> threshold = ambiguous_threshold_interval(); // computed outside the rounding-mode change
+  {
+    Protect_FPU_rounding<true> protection;
+    try {
+      Interval_nt<false> y2, x2;
+      Sign sign_y;
+      ambiguous_rotated_squares(xyz, m, y2, x2, sign_y);
+      if(sign_y != POSITIVE) return m;
+      const Interval_nt<false> d = y2 - threshold * x2;
+      return CGAL::sign(d) == NEGATIVE ? m : m + 1; // throws if the sign is uncertain (d is never 0)
+    } catch(Uncertain_conversion_exception&) {}
+  }
+  Exact_rational y2, x2;
+  Sign sign_y;
+  ambiguous_rotated_squares(xyz, m, y2, x2, sign_y);
+  if(sign_y != POSITIVE) return m;
+  return ratio_at_least_ambiguous_threshold(y2, x2) ? m + 1 : m;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_AMBIGUOUS_DIHEDRAL_CLASS_H
