@@ -19,13 +19,6 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& w)
-{
-  Eigen::Matrix3d m;
-  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-  return m;
-}
-
 // Smoothness energy of frames, F = sum_f w_f (5/3)(3 - sum_ab P_ab^4) with P = R_i^T R_j, which is
 // sum_f w_f |q(R_i) - q(R_j)|^2 exactly (design 1.3): the energy of the relaxation, measured on
 // rotations. Evaluated per face in parallel, summed sequentially (deterministic).
@@ -58,12 +51,13 @@ public:
     m_offset[0] = 0;
     for(std::size_t t = 0; t < p.number_of_tets; ++t)
       m_offset[t + 1] = m_offset[t] + (p.is_constrained(Frame_field_problem::Index(t)) ? 1 : 3);
-    m_face_gradient.resize(p.face_tets.size());
+    m_face_energy.resize(p.face_tets.size());
+    m_face_torque.resize(p.face_tets.size());
   }
 
   std::size_t number_of_unknowns() const { return m_offset.back(); }
 
-  // Frames for parameters x (relative to the base frames); also the derivative bases.
+  // Frames for parameters x (relative to the base frames).
   void update_frames(const Eigen::VectorXd& x)
   {
     const std::ptrdiff_t nt = std::ptrdiff_t(m_p.number_of_tets);
@@ -75,20 +69,29 @@ public:
       if(m_p.is_constrained(Frame_field_problem::Index(t))) {
         m_frames[t] = Eigen::AngleAxisd(x[Eigen::Index(o)], m_p.direction(Frame_field_problem::Index(t))).toRotationMatrix() * m_base[t];
       } else {
-        m_frames[t] = (Eigen::AngleAxisd(x[Eigen::Index(o + 2)], Eigen::Vector3d::UnitZ()) *
-                       Eigen::AngleAxisd(x[Eigen::Index(o + 1)], Eigen::Vector3d::UnitY()) *
-                       Eigen::AngleAxisd(x[Eigen::Index(o)], Eigen::Vector3d::UnitX())).toRotationMatrix() * m_base[t];
+        // Rz(gamma) Ry(beta) Rx(alpha), written out
+        const double ca = std::cos(x[Eigen::Index(o)]), sa = std::sin(x[Eigen::Index(o)]);
+        const double cb = std::cos(x[Eigen::Index(o + 1)]), sb = std::sin(x[Eigen::Index(o + 1)]);
+        const double cg = std::cos(x[Eigen::Index(o + 2)]), sg = std::sin(x[Eigen::Index(o + 2)]);
+        Eigen::Matrix3d R;
+        R << cg * cb, cg * sb * sa - sg * ca, cg * sb * ca + sg * sa,
+             sg * cb, sg * sb * sa + cg * ca, sg * sb * ca - cg * sa,
+             -sb, cb * sa, cb * ca;
+        m_frames[t] = R * m_base[t];
       }
     }
   }
 
   // LBFGS++ objective: energy and gradient with respect to the parameters.
+  // Every parameter rotates its frame about a world axis w (left multiplication), and
+  // <dF/dR, [w]x R>_F = w . tau with tau the axial vector of S - S^T, S = (dF/dR) R^T. Per face,
+  // with P = R_i^T R_j and G = dF/dP, S_j gets K = R_i G R_j^T and S_i gets K^T, so a face only
+  // contributes +/- axial(K - K^T) to its two tets.
   double operator()(const Eigen::VectorXd& x, Eigen::VectorXd& grad)
   {
     update_frames(x);
     ++m_evaluations;
     const std::ptrdiff_t nf = std::ptrdiff_t(m_p.face_tets.size());
-    std::vector<double> e(m_p.face_tets.size());
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static)
 #endif
@@ -97,10 +100,11 @@ public:
       const Eigen::Matrix3d& Rj = m_frames[m_p.face_tets[f][1]];
       const Eigen::Matrix3d P = Ri.transpose() * Rj;
       const double w = m_p.face_weight[f];
-      e[f] = w * (5.0 / 3.0) * (3.0 - P.array().square().square().sum());
-      const Eigen::Matrix3d G = (-(20.0 / 3.0) * w) * P.array().cube().matrix(); // dF/dP
-      m_face_gradient[f][0] = Rj * G.transpose();                               // dF/dR_i
-      m_face_gradient[f][1] = Ri * G;                                           // dF/dR_j
+      const Eigen::Array33d P2 = P.array().square();
+      m_face_energy[f] = w * (5.0 / 3.0) * (3.0 - P2.square().sum());
+      const Eigen::Matrix3d G = (-(20.0 / 3.0) * w) * (P2 * P.array()).matrix(); // dF/dP
+      const Eigen::Matrix3d K = Ri * G * Rj.transpose();
+      m_face_torque[f] = Eigen::Vector3d(K(2, 1) - K(1, 2), K(0, 2) - K(2, 0), K(1, 0) - K(0, 1));
     }
     grad.resize(Eigen::Index(number_of_unknowns()));
     const std::ptrdiff_t nt = std::ptrdiff_t(m_p.number_of_tets);
@@ -108,29 +112,26 @@ public:
 #pragma omp parallel for schedule(static)
 #endif
     for(std::ptrdiff_t t = 0; t < nt; ++t) {
-      Eigen::Matrix3d dR = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d tau = Eigen::Vector3d::Zero();
       for(Frame_field_problem::Index f : m_p.tet_faces[t]) {
         if(f == Frame_field_problem::none) continue;
-        dR += m_face_gradient[f][m_p.face_tets[f][0] == std::size_t(t) ? 0 : 1];
+        if(m_p.face_tets[f][0] == std::size_t(t)) tau -= m_face_torque[f];
+        else tau += m_face_torque[f];
       }
       const std::size_t o = m_offset[t];
-      const Eigen::Matrix3d& R = m_frames[t];
       if(m_p.is_constrained(Frame_field_problem::Index(t))) {
-        grad[Eigen::Index(o)] = (dR.cwiseProduct(cross_matrix(m_p.direction(Frame_field_problem::Index(t))) * R)).sum();
+        grad[Eigen::Index(o)] = tau.dot(m_p.direction(Frame_field_problem::Index(t)));
       } else {
-        const Eigen::Matrix3d Rz = Eigen::AngleAxisd(x[Eigen::Index(o + 2)], Eigen::Vector3d::UnitZ()).toRotationMatrix();
-        const Eigen::Matrix3d Ry = Eigen::AngleAxisd(x[Eigen::Index(o + 1)], Eigen::Vector3d::UnitY()).toRotationMatrix();
-        const Eigen::Matrix3d Rx = Eigen::AngleAxisd(x[Eigen::Index(o)], Eigen::Vector3d::UnitX()).toRotationMatrix();
-        const Eigen::Matrix3d dgamma = cross_matrix(Eigen::Vector3d::UnitZ()) * R;
-        const Eigen::Matrix3d dbeta = Rz * cross_matrix(Eigen::Vector3d::UnitY()) * Ry * Rx * m_base[t];
-        const Eigen::Matrix3d dalpha = Rz * Ry * cross_matrix(Eigen::Vector3d::UnitX()) * Rx * m_base[t];
-        grad[Eigen::Index(o)] = dR.cwiseProduct(dalpha).sum();
-        grad[Eigen::Index(o + 1)] = dR.cwiseProduct(dbeta).sum();
-        grad[Eigen::Index(o + 2)] = dR.cwiseProduct(dgamma).sum();
+        // axes of the three parameter rotations: Rz Ry e_x, Rz e_y, e_z
+        const double cb = std::cos(x[Eigen::Index(o + 1)]), sb = std::sin(x[Eigen::Index(o + 1)]);
+        const double cg = std::cos(x[Eigen::Index(o + 2)]), sg = std::sin(x[Eigen::Index(o + 2)]);
+        grad[Eigen::Index(o)] = tau.dot(Eigen::Vector3d(cg * cb, sg * cb, -sb));
+        grad[Eigen::Index(o + 1)] = tau.dot(Eigen::Vector3d(-sg, cg, 0.));
+        grad[Eigen::Index(o + 2)] = tau.z();
       }
     }
     double sum = 0;
-    for(double v : e) sum += v;
+    for(double v : m_face_energy) sum += v;
     if(sum < m_best_energy) { m_best_energy = sum; m_best_x = x; }
     return sum;
   }
@@ -191,7 +192,8 @@ private:
   std::vector<Eigen::Matrix3d>& m_frames;
   std::vector<Eigen::Matrix3d> m_base;
   std::vector<std::size_t> m_offset;
-  std::vector<std::array<Eigen::Matrix3d, 2> > m_face_gradient;
+  std::vector<double> m_face_energy;
+  std::vector<Eigen::Vector3d> m_face_torque;
   std::size_t m_evaluations = 0;
   Eigen::VectorXd m_best_x;
   double m_best_energy = 0;
