@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_BOUNDARY_DIRECTION_CONSTRAINTS_H
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
 #include <CGAL/Hexahedral_remeshing/boundary_edge_valences.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
@@ -51,20 +52,6 @@ struct Boundary_direction_constraints_result
   /// Wall-clock time of the computation, in seconds.
   double seconds = 0;
 };
-
-/// \ingroup PkgHexahedralRemeshingRef
-/// The unit outward normals `n_i` of the boundary triangles, indexed by boundary triangle.
-template <class Traits>
-std::vector<Eigen::Vector3d> boundary_triangle_unit_normals(const Tetrahedral_mesh_3<Traits>& mesh)
-{
-  std::vector<Eigen::Vector3d> n(mesh.number_of_boundary_triangles());
-  for(std::size_t i = 0; i < n.size(); ++i) {
-    const auto v = mesh.boundary_triangle_normal(typename Tetrahedral_mesh_3<Traits>::Index(i));
-    n[i] = Eigen::Vector3d(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
-    n[i] /= n[i].norm();
-  }
-  return n;
-}
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// The dihedral angle `phi(v_i, v_j)` that the directions of the two boundary triangles of boundary

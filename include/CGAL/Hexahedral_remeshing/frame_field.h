@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_H
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field_initialization.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
@@ -64,20 +65,6 @@ struct Frame_field_result
   /// Total seconds.
   double seconds = 0;
 };
-
-/// \ingroup PkgHexahedralRemeshingRef
-/// Unit outward normals of the boundary triangles, indexed by boundary triangle: passed as the
-/// directions of `compute_frame_field()`, they give the classic normal-aligned frame field.
-template <class Traits>
-std::vector<Eigen::Vector3d> boundary_triangle_unit_normals(const Tetrahedral_mesh_3<Traits>& mesh)
-{
-  std::vector<Eigen::Vector3d> normals(mesh.number_of_boundary_triangles());
-  for(std::size_t b = 0; b < normals.size(); ++b) {
-    const auto n = mesh.boundary_triangle_normal(typename Tetrahedral_mesh_3<Traits>::Index(b));
-    normals[b] = Eigen::Vector3d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())).normalized();
-  }
-  return normals;
-}
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Computes a smooth octahedral frame field, one frame per tetrahedron, following Ray et al. 2016
