@@ -41,5 +41,40 @@ expect_error 2 "expects a number" info "$data/cube.off" --max-volume abc
 expect_error 5 "cannot open file for writing" info "$data/n13c_acute_line.vtk" --json "$tmp/no/such/dir/x.json"
 [ ! -e "$tmp/no/such/dir/x.json.tmp" ] || fail "partial output left behind"
 
+# constraints on the shipped model: exit 0, JSON keys, E(v) < pi/4, VTK of the boundary
+"$hexmesh" constraints "$data/n13c_acute_line.vtk" --json "$tmp/c.json" --vtk "$tmp/c.vtk" \
+  --save-valences "$tmp/valences.txt" > "$tmp/out" 2> "$tmp/err" || fail "constraints exit code $?"
+[ ! -s "$tmp/err" ] || fail "constraints with low_angle printed: $(cat "$tmp/err")"
+for key in E_initial E_final failed_faces seconds histogram queue_pops; do
+  grep -q "\"$key\"" "$tmp/c.json" || fail "constraints JSON lacks $key"
+done
+grep -q '"histogram": \[0, 60, 615, 0, 0, 0, 0\]' "$tmp/c.json" || fail "constraints JSON histogram: $(cat "$tmp/c.json")"
+grep -q '"failed_faces": 0' "$tmp/c.json" || fail "constraints JSON failed_faces: $(cat "$tmp/c.json")"
+if command -v python3 >/dev/null; then
+  python3 -c "
+import json, math, sys
+c = json.load(open(sys.argv[1]))['constraints']
+sys.exit(0 if c['E_initial'] > math.pi / 4 > c['E_final'] else 1)" "$tmp/c.json" || fail "constraints JSON: E(n) > pi/4 > E(v) violated"
+fi
+grep -q "SCALARS E_i double" "$tmp/c.vtk" && grep -q "VECTORS v double" "$tmp/c.vtk" && grep -q "VECTORS n double" "$tmp/c.vtk" \
+  || fail "constraints VTK lacks n, v or E_i"
+grep -q "^CELL_TYPES 450" "$tmp/c.vtk" || fail "constraints VTK: not the 450 boundary triangles"
+# the saved valences read back give the same result
+"$hexmesh" constraints "$data/n13c_acute_line.vtk" --heuristic geometric --valences "$tmp/valences.txt" \
+  --json "$tmp/c2.json" > /dev/null 2> "$tmp/err" || fail "constraints --valences (saved file) exit code $?"
+grep -q '"histogram": \[0, 60, 615, 0, 0, 0, 0\]' "$tmp/c2.json" || fail "saved valences do not round trip"
+# geometric: valence-0 edges, one warning line saying why it is not meshable
+"$hexmesh" constraints "$data/n13c_acute_line.vtk" --heuristic geometric > "$tmp/out" 2> "$tmp/err" \
+  || fail "constraints --heuristic geometric exit code $?"
+[ "$(wc -l < "$tmp/err")" -eq 1 ] || fail "geometric: expected one warning line, got: $(cat "$tmp/err")"
+grep -q "8 boundary edges get valence k = 0.*not hex-meshable" "$tmp/err" || fail "geometric: warning lacks the reason: $(cat "$tmp/err")"
+# a bad --valences line: exit 3, one line naming the file and the line
+printf '# a b k\n0 0 2\n' > "$tmp/bad_valences.txt"
+expect_error 3 "bad_valences.txt:2: vertices 0 0 do not form an edge" constraints "$data/n13c_acute_line.vtk" --valences "$tmp/bad_valences.txt"
+printf '\n\n%s 0\n' "$(head -2 "$tmp/valences.txt" | tail -1 | cut -d' ' -f1-2)" > "$tmp/bad_valences.txt"
+expect_error 3 "bad_valences.txt:3: valence 0 of edge .* is impossible" constraints "$data/n13c_acute_line.vtk" --valences "$tmp/bad_valences.txt"
+expect_error 2 "unknown heuristic 'round'" constraints "$data/n13c_acute_line.vtk" --heuristic round
+expect_error 2 "expects an integer from 0 to 20" constraints "$data/n13c_acute_line.vtk" --refinements 2.5
+
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"

@@ -131,15 +131,18 @@ prescribed_edge(const Tetrahedral_mesh_3<Traits>& mesh, const Key& key, std::str
 {
   typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
   if constexpr(std::is_integral<Key>::value) {
-    what = "edge " + std::to_string(key);
-    if(key < 0 || std::size_t(key) >= mesh.number_of_edges())
+    const long long index = static_cast<long long>(key);
+    what = "edge " + std::to_string(index);
+    if(index < 0 || static_cast<unsigned long long>(index) >= mesh.number_of_edges())
       throw Input_error("prescribed_edge_valences", 0, what + ": no such edge (the mesh has " +
                         std::to_string(mesh.number_of_edges()) + " edges)");
     return Index(key);
   } else {
-    const auto a = std::get<0>(key), b = std::get<1>(key);
+    const long long a = static_cast<long long>(std::get<0>(key)), b = static_cast<long long>(std::get<1>(key));
     what = "vertices " + std::to_string(a) + " " + std::to_string(b);
-    const Index e = (a < 0 || b < 0) ? Tetrahedral_mesh_3<Traits>::null_index : mesh.find_edge(Index(a), Index(b));
+    const long long nv = static_cast<long long>(mesh.number_of_vertices());
+    const Index e = (a < 0 || b < 0 || a >= nv || b >= nv || a == b) ? Tetrahedral_mesh_3<Traits>::null_index
+                                                                     : mesh.find_edge(Index(a), Index(b));
     if(e == Tetrahedral_mesh_3<Traits>::null_index)
       throw Input_error("prescribed_edge_valences", 0, what + ": not an edge of the mesh");
     return e;

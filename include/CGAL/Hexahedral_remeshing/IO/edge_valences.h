@@ -78,7 +78,7 @@ read_edge_valences(const std::string& filename, const Tetrahedral_mesh_3<Traits>
       if(x < 0 || x >= nv)
         throw Input_error(filename, line_number, "vertex " + std::to_string(x) + " does not exist (the input has " +
                           std::to_string(nv) + " vertices, numbered from 0)");
-    const Index e = mesh.find_edge(Index(a), Index(b));
+    const Index e = (a == b) ? Tetrahedral_mesh_3<Traits>::null_index : mesh.find_edge(Index(a), Index(b));
     if(e == Tetrahedral_mesh_3<Traits>::null_index)
       throw Input_error(filename, line_number, "vertices " + pair + " do not form an edge of the mesh");
     if(!mesh.is_boundary_edge(e))

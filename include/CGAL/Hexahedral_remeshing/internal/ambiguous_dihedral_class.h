@@ -26,7 +26,7 @@ namespace internal {
 //
 // With m = round(2 phi / pi) the exact class of `dihedral_class_exact()` (ties up), write
 // phi = m pi/2 + psi with psi in [-pi/4, pi/4).  Then round(2 phi / pi + 0.05) is m + 1 if
-// psi >= theta0 = 0.45 pi/2 (81 pi/400, 40.5 degrees), and m otherwise: the bias moves the rounding
+// psi >= theta0 = 0.45 pi/2 (9 pi/40, 40.5 degrees), and m otherwise: the bias moves the rounding
 // thresholds from (m + 1/2) pi/2 down to (m + 0.45) pi/2.
 //
 // The test psi >= theta0 is decided exactly for the double coordinates of the four points:
@@ -42,20 +42,20 @@ namespace internal {
 // directed rounding at increasing precision, until the enclosure excludes the rational Y^2 / X^2
 // (this terminates because T is irrational).
 
-// Enclosure [lo, hi] of T = tan^2(81 pi / 400) computed with MPFR at `bits` bits, directed rounding:
+// Enclosure [lo, hi] of T = tan^2(9 pi / 40) computed with MPFR at `bits` bits, directed rounding:
 // pi is enclosed, then tan is increasing on (0, pi/2) and squaring is increasing on positives.
 inline void ambiguous_threshold_enclosure(mpfr_prec_t bits, mpfr_t lo, mpfr_t hi)
 {
   mpfr_t a;
   mpfr_init2(a, bits);
   mpfr_const_pi(lo, MPFR_RNDD);
-  mpfr_mul_ui(lo, lo, 81, MPFR_RNDD);
-  mpfr_div_ui(lo, lo, 400, MPFR_RNDD);
+  mpfr_mul_ui(lo, lo, 9, MPFR_RNDD);
+  mpfr_div_ui(lo, lo, 40, MPFR_RNDD);
   mpfr_tan(lo, lo, MPFR_RNDD);
   mpfr_sqr(lo, lo, MPFR_RNDD);
   mpfr_const_pi(a, MPFR_RNDU);
-  mpfr_mul_ui(a, a, 81, MPFR_RNDU);
-  mpfr_div_ui(a, a, 400, MPFR_RNDU);
+  mpfr_mul_ui(a, a, 9, MPFR_RNDU);
+  mpfr_div_ui(a, a, 40, MPFR_RNDU);
   mpfr_tan(a, a, MPFR_RNDU);
   mpfr_sqr(hi, a, MPFR_RNDU);
   mpfr_clear(a);
