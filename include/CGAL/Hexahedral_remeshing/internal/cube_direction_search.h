@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -44,12 +45,18 @@ cube_direction_search(const Boundary_direction_energy& energy, std::uint32_t i, 
 {
   Cube_direction_search_result r;
   std::array<long, 3> best{{1, 0, 0}};
+  double cos_best = -1; // cos(r.energy) once r.energy < pi
   auto evaluate = [&](const std::array<long, 3>& p) {
     Eigen::Vector3d u(static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]));
     u /= u.norm();
     ++r.evaluations;
-    const double e = energy.face_energy_below(i, u, v, r.energy);
-    if(e < r.energy) { r.energy = e; r.direction = u; best = p; }
+    const double e = energy.face_energy_below(i, u, v, r.energy, cos_best);
+    if(e < r.energy) {
+      r.energy = e;
+      r.direction = u;
+      best = p;
+      cos_best = e < CGAL_PI ? std::cos(e) : -1.0;
+    }
   };
   for(long x = -1; x <= 1; ++x)
     for(long y = -1; y <= 1; ++y)

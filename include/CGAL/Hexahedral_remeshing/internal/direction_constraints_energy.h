@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_DIRECTION_CONSTRAINTS_ENERGY_H
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
 #include <CGAL/number_utils.h>
@@ -87,15 +88,11 @@ public:
                           " is outside 0.." + std::to_string(maximum_valence));
       }
     const std::size_t nf = mesh.number_of_boundary_triangles();
-    m_normals.resize(nf);
     m_half_edges.resize(nf);
     auto to_vector = [](const auto& p) {
       return Vector(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     };
-    for(Index i = 0; i < nf; ++i) {
-      const Vector n = to_vector(mesh.boundary_triangle_normal(i));
-      m_normals[i] = n / n.norm();
-    }
+    m_normals = boundary_triangle_unit_normals(mesh);
     for(Index i = 0; i < nf; ++i) {
       const auto& tv = mesh.boundary_triangle_vertices(i);
       for(int s = 0; s < 3; ++s) {
@@ -162,22 +159,30 @@ public:
   // E_i of the field v in which v_i is replaced by the unit vector u, if it is below `bound`;
   // otherwise +infinity, returned as soon as one term reaches `bound` (the value of a candidate
   // that is not better than the best so far does not matter).  The result never depends on the
-  // bound when it is below it.
-  double face_energy_below(Index i, const Vector& u, const std::vector<Vector>& v, double bound) const
+  // bound when it is below it.  `cos_bound` is cos(bound) when bound < pi (any value otherwise),
+  // computed once by the caller.
+  double face_energy_below(Index i, const Vector& u, const std::vector<Vector>& v, double bound, double cos_bound) const
   {
-    const std::array<Half_edge, 3>& h = m_half_edges[i];
-    // delta^n: arccos is decreasing, so the largest angle is the one of the smallest dot product.
-    const double d = (std::min)({u.dot(h[0].ideal_normal), u.dot(h[1].ideal_normal), u.dot(h[2].ideal_normal)});
     constexpr double infinity = std::numeric_limits<double>::infinity();
-    if(bound < CGAL_PI && d < std::cos(bound) - 1e-12) return infinity; // arccos(d) is certainly > bound
-    double e = std::acos((std::max)(-1.0, (std::min)(1.0, d)));
-    if(e >= bound) return infinity;
+    const std::array<Half_edge, 3>& h = m_half_edges[i];
+    // delta^n: arccos is decreasing, so the largest angle is the one of the smallest dot product;
+    // a dot product clearly below cos(bound) rejects the candidate without any trigonometry.
+    const double d = (std::min)({u.dot(h[0].ideal_normal), u.dot(h[1].ideal_normal), u.dot(h[2].ideal_normal)});
+    if(bound < CGAL_PI && d < cos_bound - 1e-12) return infinity; // arccos(d) is certainly > bound
+    double e = 0;
     for(int s = 0; s < 3; ++s) {
       const double dev = dihedral_deviation(dihedral_angle(u, v[h[s].neighbor], h[s].edge), h[s].target, h[s].modulo);
       if(dev >= bound) return infinity;
       e = (std::max)(e, dev);
     }
-    return e;
+    const double en = std::acos((std::max)(-1.0, (std::min)(1.0, d)));
+    if(en >= bound) return infinity;
+    return (std::max)(e, en);
+  }
+
+  double face_energy_below(Index i, const Vector& u, const std::vector<Vector>& v, double bound) const
+  {
+    return face_energy_below(i, u, v, bound, bound < CGAL_PI ? std::cos(bound) : -1.0);
   }
 
 private:
