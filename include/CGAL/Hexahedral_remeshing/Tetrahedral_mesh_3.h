@@ -120,6 +120,8 @@ public:
   std::size_t number_of_components() const { return m_number_of_components; }
   /// Number of tetrahedra split by preprocessing (each into four).
   std::size_t number_of_split_tetrahedra() const { return m_number_of_split_tetrahedra; }
+  /// Number of interior edges joining two boundary vertices split by preprocessing.
+  std::size_t number_of_split_chords() const { return m_number_of_split_chords; }
   /// Number of input tetrahedra that were inverted and have been re-oriented.
   std::size_t number_of_reoriented_tetrahedra() const { return m_number_of_reoriented_tetrahedra; }
   /// @}
@@ -249,6 +251,7 @@ private:
   std::size_t m_number_of_components = 0;
   std::size_t m_number_of_split_tetrahedra = 0;
   std::size_t m_number_of_reoriented_tetrahedra = 0;
+  std::size_t m_number_of_split_chords = 0;
 
   std::vector<std::array<Index, 3> > m_face_vertices;
   std::vector<std::array<Index, 2> > m_face_tets;

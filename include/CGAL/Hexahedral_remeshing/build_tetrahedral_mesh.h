@@ -33,6 +33,13 @@ namespace Hexahedral_remeshing {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{split_boundary_chords}
+///     \cgalParamDescription{split at its midpoint every interior edge whose two endpoints lie on the
+///       boundary, so that frames can turn smoothly between two boundary constraints (thin wedges at
+///       acute features); new vertices are appended}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{an instance of the traits}
 ///     \cgalParamType{a model of `HexahedralRemeshingTraits_3`}
@@ -47,8 +54,9 @@ void build_tetrahedral_mesh(const Tetrahedral_soup_3<typename Traits::Point_3>& 
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const bool split = choose_parameter(get_parameter(np, internal_np::split_multi_boundary_tetrahedra), true);
+  const bool chords = choose_parameter(get_parameter(np, internal_np::split_boundary_chords), false);
   const Traits traits = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Traits());
-  internal::Tetrahedral_mesh_builder<Traits>(traits).build(soup, mesh, split);
+  internal::Tetrahedral_mesh_builder<Traits>(traits).build(soup, mesh, split, chords);
 }
 
 } // namespace Hexahedral_remeshing

@@ -12,6 +12,7 @@ namespace Hexahedral_remeshing {
 /// Tags of the named parameters of this package (CGAL's own tags live in `CGAL::internal_np`).
 namespace internal_np {
 enum split_multi_boundary_tetrahedra_t { split_multi_boundary_tetrahedra };
+enum split_boundary_chords_t { split_boundary_chords };
 enum maximum_tetrahedron_volume_t { maximum_tetrahedron_volume };
 enum radius_edge_ratio_t { radius_edge_ratio };
 enum preserve_surface_triangles_t { preserve_surface_triangles };
@@ -73,7 +74,10 @@ template <class T> unspecified_type maximum_smoothing_iterations(const T& value)
 template <class T> unspecified_type smoothing_tolerance(const T& value);
 /// Frame field: relative residual of the relaxation's conjugate gradients (`double`, default 1e-6).
 template <class T> unspecified_type relaxation_tolerance(const T& value);
+/// Split every interior edge joining two boundary vertices at its midpoint (`bool`, default `false`).
+template <class T> unspecified_type split_boundary_chords(const T& value);
 #else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_boundary_chords)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(face_weights)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_smoothing_iterations)

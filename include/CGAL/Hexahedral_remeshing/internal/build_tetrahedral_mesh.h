@@ -43,14 +43,19 @@ public:
 
   Tetrahedral_mesh_builder(const Traits& traits) : m_traits(traits) {}
 
-  void build(const Tetrahedral_soup_3<Point_3>& soup, Mesh& mesh, bool split_multi_boundary_tetrahedra)
+  void build(const Tetrahedral_soup_3<Point_3>& soup, Mesh& mesh, bool split_multi_boundary_tetrahedra,
+             bool split_boundary_chords = false)
   {
     m_source = soup.source.empty() ? std::string("<memory>") : soup.source;
     mesh = Mesh();
     mesh.m_source = m_source;
     check_and_copy(soup, mesh);
     build_faces(mesh, soup.tetrahedron_lines);
-    if(split_multi_boundary_tetrahedra && split(mesh)) {
+    if(split_boundary_chords && split_chords(mesh)) {
+      m_original_tet = mesh.m_tet_input_index;
+      build_faces(mesh, soup.tetrahedron_lines);
+    }
+    if(split_multi_boundary_tetrahedra && split(mesh, soup.tetrahedron_lines)) {
       build_faces(mesh, soup.tetrahedron_lines);
     }
     build_boundary_triangles(mesh);
@@ -195,10 +200,22 @@ private:
     }
   }
 
+  // Barycentre of four points, computed as a/4 + b/4 + c/4 + d/4 so that it cannot overflow for
+  // coordinates near the largest double (the scaling by 1/4 is exact for normal numbers, so the
+  // result is the same as (a + b + c + d) / 4 whenever that one does not overflow).
+  static Point_3 barycentre(const Point_3& a, const Point_3& b, const Point_3& c, const Point_3& d)
+  {
+    double xyz[3];
+    for(int i = 0; i < 3; ++i)
+      xyz[i] = CGAL::to_double(a[i]) * 0.25 + CGAL::to_double(b[i]) * 0.25 + CGAL::to_double(c[i]) * 0.25 +
+               CGAL::to_double(d[i]) * 0.25;
+    return Point_3(xyz[0], xyz[1], xyz[2]);
+  }
+
   // 1-to-4 barycentric split of every tetrahedron with two or more boundary faces, so that each
   // tetrahedron carries at most one boundary alignment constraint. One pass suffices: each of the
   // four children keeps exactly one face of its parent.
-  bool split(Mesh& mesh)
+  bool split(Mesh& mesh, const std::vector<std::size_t>& lines)
   {
     std::vector<std::array<Index, 4> > tets;
     std::vector<Index> input_index;
@@ -215,8 +232,8 @@ private:
       }
       ++count;
       const std::array<Index, 4>& tv = mesh.m_tets[t];
-      const Point_3 g = CGAL::centroid(mesh.m_points[tv[0]], mesh.m_points[tv[1]],
-                                       mesh.m_points[tv[2]], mesh.m_points[tv[3]]);
+      const Point_3 g = barycentre(mesh.m_points[tv[0]], mesh.m_points[tv[1]],
+                                   mesh.m_points[tv[2]], mesh.m_points[tv[3]]);
       const Index gi = Index(mesh.m_points.size());
       mesh.m_points.push_back(g);
       for(int i = 0; i < 4; ++i) {
@@ -224,7 +241,7 @@ private:
         child[i] = gi;
         if(orientation(mesh.m_points[child[0]], mesh.m_points[child[1]], mesh.m_points[child[2]],
                        mesh.m_points[child[3]]) != CGAL::POSITIVE)
-          fail(0, describe_tet(mesh.m_tet_input_index[t]) +
+          fail(line_of(mesh.m_tet_input_index[t], lines), describe_tet(mesh.m_tet_input_index[t]) +
                ": too flat to be split at its barycentre (a child tetrahedron is degenerate)");
         tets.push_back(child);
         input_index.push_back(mesh.m_tet_input_index[t]);
@@ -236,6 +253,76 @@ private:
     mesh.m_number_of_split_tetrahedra = count;
     m_original_tet = mesh.m_tet_input_index;
     return true;
+  }
+
+  // Splits at its midpoint every interior edge whose two endpoints lie on the boundary (a "chord").
+  // Such an edge joins two boundary constraints with nothing in between, so the frames of its ring
+  // must turn abruptly (typically across a thin wedge at an acute feature, or where a curved
+  // surface faces itself): splitting it gives the field room to turn smoothly.
+  bool split_chords(Mesh& mesh)
+  {
+    std::vector<char> on_boundary(mesh.m_points.size(), 0);
+    std::set<std::array<Index, 2> > boundary_edges;
+    for(std::size_t f = 0; f < mesh.m_face_tets.size(); ++f)
+      if(mesh.m_face_tets[f][1] == null_index) {
+        const auto& v = mesh.m_face_vertices[f];
+        for(int i = 0; i < 3; ++i) {
+          on_boundary[v[i]] = 1;
+          boundary_edges.insert({(std::min)(v[i], v[(i + 1) % 3]), (std::max)(v[i], v[(i + 1) % 3])});
+        }
+      }
+    std::set<std::array<Index, 2> > chords;
+    for(const auto& t : mesh.m_tets)
+      for(int k = 0; k < 6; ++k) {
+        const Index a = t[tet_edge_local[k][0]], b = t[tet_edge_local[k][1]];
+        const std::array<Index, 2> key{(std::min)(a, b), (std::max)(a, b)};
+        if(on_boundary[a] && on_boundary[b] && !boundary_edges.count(key)) chords.insert(key);
+      }
+    if(chords.empty()) return false;
+    std::vector<std::vector<Index> > vertex_tets(mesh.m_points.size());
+    for(std::size_t t = 0; t < mesh.m_tets.size(); ++t)
+      for(Index v : mesh.m_tets[t]) vertex_tets[v].push_back(Index(t));
+    typename Traits::Orientation_3 orientation = m_traits.orientation_3_object();
+    auto positive = [&](const std::array<Index, 4>& t) {
+      return orientation(mesh.m_points[t[0]], mesh.m_points[t[1]], mesh.m_points[t[2]], mesh.m_points[t[3]]) == CGAL::POSITIVE;
+    };
+    std::size_t count = 0;
+    for(const auto& chord : chords) { // std::set: deterministic order
+      const Index a = chord[0], b = chord[1];
+      std::vector<Index> ring;
+      for(Index t : vertex_tets[a])
+        if(std::find(mesh.m_tets[t].begin(), mesh.m_tets[t].end(), b) != mesh.m_tets[t].end()) ring.push_back(t);
+      const Index m = Index(mesh.m_points.size());
+      mesh.m_points.push_back(CGAL::midpoint(mesh.m_points[a], mesh.m_points[b]));
+      // all children must be positively oriented, else the chord is left alone
+      bool ok = true;
+      std::vector<std::pair<std::array<Index, 4>, std::array<Index, 4> > > children;
+      for(Index t : ring) {
+        std::array<Index, 4> keep_a = mesh.m_tets[t], keep_b = mesh.m_tets[t];
+        for(int i = 0; i < 4; ++i) {
+          if(keep_a[i] == b) keep_a[i] = m;
+          if(keep_b[i] == a) keep_b[i] = m;
+        }
+        ok = ok && positive(keep_a) && positive(keep_b);
+        children.push_back({keep_a, keep_b});
+      }
+      if(!ok) { mesh.m_points.pop_back(); continue; }
+      vertex_tets.emplace_back();
+      for(std::size_t k = 0; k < ring.size(); ++k) {
+        const Index t = ring[k];
+        const Index nt = Index(mesh.m_tets.size());
+        mesh.m_tets[t] = children[k].first;
+        mesh.m_tets.push_back(children[k].second);
+        mesh.m_tet_input_index.push_back(mesh.m_tet_input_index[t]);
+        auto& lb = vertex_tets[b];
+        lb.erase(std::find(lb.begin(), lb.end(), t));
+        vertex_tets[m].push_back(t);
+        for(Index v : children[k].second) vertex_tets[v].push_back(nt);
+      }
+      ++count;
+    }
+    mesh.m_number_of_split_chords = count;
+    return count > 0;
   }
 
   void build_boundary_triangles(Mesh& mesh)
@@ -326,10 +413,12 @@ private:
         const std::array<Index, 2>& ft = mesh.m_face_tets[c.exit];
         if(ft[1] == null_index) break;
         const Index next = ft[0] == c.tet ? ft[1] : ft[0];
-        std::size_t n = inc.size();
-        for(std::size_t i = 0; i < inc.size(); ++i)
-          if(inc[i].tet == next) { n = i; break; }
-        if(n == inc.size()) fail(0, "internal error: broken ring around edge");
+        // inc is sorted by tetrahedron (the records are sorted by (edge, tetrahedron)): binary search,
+        // so that an edge with k tetrahedra costs O(k log k), not O(k^2)
+        const auto it = std::lower_bound(inc.begin(), inc.end(), next,
+                                         [](const Incidence& a, Index t) { return a.tet < t; });
+        if(it == inc.end() || it->tet != next) fail(0, "internal error: broken ring around edge");
+        const std::size_t n = std::size_t(it - inc.begin());
         if(!on_boundary && n == start) break;
         mesh.m_ring_faces.push_back(c.exit);
         cur = n;
@@ -417,9 +506,12 @@ private:
     std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
     for(std::size_t b = 0; b < mesh.m_bt_face.size(); ++b)
       for(Index v : mesh.m_face_vertices[mesh.m_bt_face[b]]) corner_bt[fill[v]++] = Index(b);
+    // the boundary triangles of each vertex are listed in increasing order: binary search
     auto corner_of = [&](Index v, Index b) {
-      for(Index c = offsets[v]; c < offsets[v + 1]; ++c) if(corner_bt[c] == b) return c;
-      return null_index;
+      const auto first = corner_bt.begin() + offsets[v], last = corner_bt.begin() + offsets[v + 1];
+      const auto it = std::lower_bound(first, last, b);
+      if(it == last || *it != b) fail(0, "internal error: boundary triangle missing at a vertex");
+      return Index(it - corner_bt.begin());
     };
     Union_find uf(corner_bt.size());
     for(Index e : mesh.m_boundary_edges)

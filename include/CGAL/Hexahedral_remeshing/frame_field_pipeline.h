@@ -1,0 +1,177 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_PIPELINE_H
+#define CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_PIPELINE_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/boundary_direction_constraints.h>
+#include <CGAL/Hexahedral_remeshing/boundary_edge_valences.h>
+#include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
+#include <CGAL/Hexahedral_remeshing/frame_field.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/realign_frame_field.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+
+#include <Eigen/Dense>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+namespace internal_np {
+enum baseline_t { baseline };
+enum realignment_t { realignment };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// Pipeline: align the frame field with the normals, without valences nor constraints (the classic
+/// field the paper compares against) (`bool`, default `false`).
+template <class T> unspecified_type baseline(const T& value);
+/// Pipeline: realign the field with the normals after the frame field (`bool`, default `true`).
+template <class T> unspecified_type realignment(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(baseline)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(realignment)
+#endif
+} // namespace parameters
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Default visitor of the pipeline: the hooks of `Frame_field_visitor`, called for every stage of
+/// the pipeline (`"valences"`, `"constraints"`, `"setup"`, `"initialization"`, `"smoothing"`,
+/// `"matchings"`, `"realignment"`), plus a hook called once the whole result is available.
+struct Frame_field_pipeline_visitor : Frame_field_visitor
+{
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Everything the frame-field pipeline computes, stage by stage.
+struct Frame_field_pipeline_result
+{
+  /// True if the field is the classic normal-aligned one (named parameter `baseline`).
+  bool baseline = false;
+  /// True if the field was realigned with the normals.
+  bool realigned = false;
+  /// Prescribed valence of every edge (-1 for interior edges); the geometric classes for the baseline.
+  std::vector<int> valences;
+  /// Histogram of the prescribed valences.
+  Boundary_edge_valences_statistics valence_statistics;
+  /// The directions the field of step 2 is aligned with, per boundary triangle (`v`, or the normals).
+  std::vector<Eigen::Vector3d> directions;
+  /// Report of the direction constraints (`E(n)`, `E(v)`, failures); for the baseline `E(v) = E(n)`.
+  Boundary_direction_constraints_result constraints;
+  /// The frames, one per tetrahedron (realigned unless `realignment(false)` or baseline).
+  std::vector<Eigen::Matrix3d> frames;
+  /// Report of the frame-field solver.
+  Frame_field_result frame_field;
+  /// Matchings of the field of step 2 (kept by the realignment).
+  Matchings matchings;
+  /// Singularity graph of the field.
+  Singularity_graph singularities;
+  /// Valences of the boundary edges produced by the field, compared with `valences`.
+  Boundary_valences boundary_valences;
+  /// Report of the realignment (if any).
+  Realignment_result realignment;
+  /// Seconds of each stage.
+  double valences_seconds = 0, constraints_seconds = 0, matchings_seconds = 0, seconds = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// The frame-field half of the hexahedral remeshing pipeline of Desobry et al.: boundary edge
+/// valences (heuristic or prescribed), boundary direction constraints `v` (Algorithms 1 and 2),
+/// smooth frame field aligned with `v` (Ray et al.), matchings and singularity graph, achieved
+/// boundary valences, then realignment with the normals keeping the matchings.
+///
+/// \param mesh the tetrahedral mesh (built with the default preprocessing, possibly with
+///        `split_boundary_chords(true)`, recommended for acute features)
+/// \param np an optional sequence of named parameters: those of `compute_boundary_edge_valences()`
+///        (`valence_heuristic`, `prescribed_edge_valences`, `prescribed_curve_valences`), of
+///        `compute_boundary_direction_constraints()` (`number_of_refinements`, ...), of
+///        `compute_frame_field()` (`face_weights`, `smoothing`, ...), and:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{baseline}
+///     \cgalParamDescription{align with the normals and skip valences and constraints: the classic field}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{realignment}
+///     \cgalParamDescription{realign the field with the normals (paper Sec. 3.3)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress callbacks, for every stage}
+///     \cgalParamType{a class with the member functions of `Frame_field_visitor`}
+///     \cgalParamDefault{`Frame_field_pipeline_visitor()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Input_error for impossible prescriptions; Error if a stage cannot run.
+template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_3<Traits>& mesh,
+                                                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  typedef std::chrono::steady_clock Clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  Frame_field_pipeline_visitor default_visitor;
+  auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  Frame_field_pipeline_result r;
+  r.baseline = choose_parameter(get_parameter(np, internal_np::baseline), false);
+  const bool realign = !r.baseline && choose_parameter(get_parameter(np, internal_np::realignment), true);
+  const auto start = Clock::now();
+
+  visitor.start_stage("valences");
+  auto t = Clock::now();
+  if(r.baseline)
+    r.valence_statistics = compute_boundary_edge_valences(mesh, r.valences,
+                                                          parameters::valence_heuristic(Valence_heuristic::GEOMETRIC));
+  else
+    r.valence_statistics = compute_boundary_edge_valences(mesh, r.valences, np);
+  r.valences_seconds = seconds_since(t);
+  visitor.end_stage("valences", r.valences_seconds);
+
+  visitor.start_stage("constraints");
+  t = Clock::now();
+  if(r.baseline) {
+    r.directions = boundary_triangle_unit_normals(mesh);
+    r.constraints.initial_energy = r.constraints.final_energy =
+      compute_boundary_direction_deviation(mesh, r.valences, r.directions, r.constraints.face_energies);
+    for(std::uint32_t i = 0; i < r.constraints.face_energies.size(); ++i)
+      if(r.constraints.face_energies[i] >= CGAL_PI / 4) r.constraints.failed_faces.push_back(i);
+  } else {
+    r.constraints = compute_boundary_direction_constraints(mesh, r.valences, r.directions, np);
+  }
+  r.constraints_seconds = seconds_since(t);
+  visitor.end_stage("constraints", r.constraints_seconds);
+
+  r.frame_field = compute_frame_field(mesh, r.directions, r.frames, np);
+
+  visitor.start_stage("matchings");
+  t = Clock::now();
+  r.matchings = compute_matchings(mesh, r.frames);
+  r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
+  r.boundary_valences = compute_achieved_boundary_valences(mesh, r.frames, r.matchings, r.directions, r.valences);
+  r.matchings_seconds = seconds_since(t);
+  visitor.end_stage("matchings", r.matchings_seconds);
+
+  if(realign) {
+    visitor.start_stage("realignment");
+    r.realignment = realign_frame_field(mesh, r.frames, r.matchings, r.directions);
+    r.realigned = true;
+    visitor.end_stage("realignment", r.realignment.seconds);
+  }
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_FRAME_FIELD_PIPELINE_H

@@ -1,0 +1,273 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_REALIGN_FRAME_FIELD_H
+#define CGAL_HEXAHEDRAL_REMESHING_REALIGN_FRAME_FIELD_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SVD>
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Outcome of `realign_frame_field()`.
+struct Realignment_result
+{
+  /// Largest `|1 - |E_t^T n_i|_inf|` over the constrained tetrahedra after realignment
+  /// (0 when every constrained frame has an axis exactly on its normal).
+  double alignment_error = 0;
+  /// Largest violation of the linear constraints `n_i^T E_t = v_i^T E_t^old` before projection.
+  double constraint_error = 0;
+  /// Conjugate-gradient iterations and final relative residual of the linear solve.
+  int solver_iterations = 0;
+  /// Final relative residual of the linear solve.
+  double solver_residual = 0;
+  /// Interior faces whose recomputed matching differs from the fixed one (0 expected).
+  std::size_t changed_matchings = 0;
+  /// Interior edges whose type (regular, valence 3, 5, improper) changed (0 expected).
+  std::size_t changed_edges = 0;
+  /// Seconds.
+  double seconds = 0;
+};
+
+namespace internal {
+
+// Axial index of the local axis of E aligned with direction d and its sign: E^T d ~ sign e_k.
+inline int aligned_axis(const Eigen::Matrix3d& E, const Eigen::Vector3d& d, double& sign)
+{
+  const Eigen::Vector3d c = E.transpose() * d;
+  int k = 0;
+  c.cwiseAbs().maxCoeff(&k);
+  sign = c[k] >= 0 ? 1.0 : -1.0;
+  return k;
+}
+
+// Orthonormal basis (columns) of the plane orthogonal to the unit vector n.
+inline Eigen::Matrix<double, 3, 2> tangent_basis(const Eigen::Vector3d& n)
+{
+  const Eigen::Vector3d a = std::abs(n.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d t1 = (a - a.dot(n) * n).normalized();
+  Eigen::Matrix<double, 3, 2> T;
+  T.col(0) = t1;
+  T.col(1) = n.cross(t1);
+  return T;
+}
+
+} // namespace internal
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Realigns a frame field with the surface normals while keeping its matchings, hence its
+/// singularity graph (Desobry et al., Sec. 3.3, Eq. 4): solves
+/// `min sum_f w_f |E'_i - E'_j g_ij|_F^2 + mu sum_t |E'_t - E_t|_F^2` subject to
+/// `n_i^T E'_t = v_i^T E_t` for the tetrahedron `t` of each boundary triangle `i` (enforced exactly
+/// by elimination: `E'_t = n_i c^T + T Y_t`, `c = E_t^T v_i`, `T` a basis of the plane orthogonal to
+/// `n_i`), by matrix-free conjugate gradients from `E'` = `E`, then projects every matrix to the
+/// closest rotation (the constrained column kept exactly on `+-n_i`, a 2D Procrustes for the others).
+/// Afterwards the matchings are recomputed and compared with `matchings`, and the singularity graph
+/// with the one of `frames`: any difference is reported in the result (never hidden).
+///
+/// \param mesh the mesh
+/// \param frames in: the field of step 2, aligned with `directions`; out: the realigned field
+/// \param matchings the matchings of the input field (kept)
+/// \param directions the directions `v_i` the input field is aligned with, per boundary triangle
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{relaxation_tolerance}
+///     \cgalParamDescription{relative residual at which the conjugate gradients stop}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-8`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Error if the sizes do not match the mesh.
+template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
+                                       const Matchings& matchings, const std::vector<Eigen::Vector3d>& directions,
+                                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  typedef Eigen::Matrix<double, 3, 2> Matrix32;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-8);
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t nt = mesh.number_of_tetrahedra();
+  if(frames.size() != nt || directions.size() != mesh.number_of_boundary_triangles() ||
+     matchings.face_matching.size() != mesh.number_of_faces())
+    throw Error("realign_frame_field: frames, matchings or directions do not match the mesh");
+  const internal::Octahedral_group& group = internal::octahedral_group();
+  const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
+  const Singularity_graph graph_before = compute_singularity_graph(mesh, frames, matchings);
+
+  // Per tet: the boundary triangle constraining it, the eliminated part X0 and the basis T.
+  std::vector<Index> constraint(nt, Tetrahedral_mesh_3<Traits>::null_index);
+  std::vector<Eigen::Matrix3d> X0(nt, Eigen::Matrix3d::Zero());
+  std::vector<Matrix32> T(nt);
+  Realignment_result result;
+  for(Index b = 0; b < mesh.number_of_boundary_triangles(); ++b) {
+    const Index t = mesh.boundary_triangle_tetrahedron(b);
+    if(constraint[t] != Tetrahedral_mesh_3<Traits>::null_index)
+      throw Error("realign_frame_field: tetrahedron " + std::to_string(t) + " has several boundary faces");
+    constraint[t] = b;
+    const Eigen::Vector3d c = frames[t].transpose() * directions[b].normalized();
+    X0[t] = normals[b] * c.transpose();
+    T[t] = internal::tangent_basis(normals[b]);
+  }
+  // Interior faces with their matching step in both directions: E_from ~ E_to g.
+  struct Face { Index a, b; Eigen::Matrix3d g_ab; double w; };
+  std::vector<Face> faces;
+  std::vector<std::array<Index, 4> > tet_faces(nt, {Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index,
+                                                    Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index});
+  for(Index f = 0; f < mesh.number_of_faces(); ++f) {
+    const auto& ft = mesh.face_tetrahedra(f);
+    if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) continue;
+    faces.push_back({ft[0], ft[1], group.matrix(matchings.face_matching[f]), 1.0});
+  }
+  for(Index fi = 0; fi < faces.size(); ++fi)
+    for(Index t : {faces[fi].a, faces[fi].b})
+      for(int k = 0; k < 4; ++k)
+        if(tet_faces[t][k] == Tetrahedral_mesh_3<Traits>::null_index) { tet_faces[t][k] = fi; break; }
+  std::vector<double> degree(nt, 0.);
+  for(const Face& f : faces) { degree[f.a] += f.w; degree[f.b] += f.w; }
+  // only there to make the system definite (the face weights are 1)
+  const double mu = 1e-6;
+
+  // Unknowns: 9 per free tet (E' itself), 6 per constrained tet (Y_t, E' = X0 + T Y_t).
+  std::vector<std::size_t> offset(nt + 1, 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    offset[t + 1] = offset[t] + (constraint[t] == Tetrahedral_mesh_3<Traits>::null_index ? 9 : 6);
+  const Eigen::Index n = Eigen::Index(offset[nt]);
+  auto is_constrained = [&](std::size_t t) { return constraint[t] != Tetrahedral_mesh_3<Traits>::null_index; };
+  auto expand = [&](const Eigen::VectorXd& y, std::vector<Eigen::Matrix3d>& E, bool with_offset) {
+    E.resize(nt);
+    for(std::size_t t = 0; t < nt; ++t) {
+      if(is_constrained(t)) {
+        E[t] = T[t] * Eigen::Map<const Eigen::Matrix<double, 2, 3> >(y.data() + offset[t]);
+        if(with_offset) E[t] += X0[t];
+      } else {
+        E[t] = Eigen::Map<const Eigen::Matrix3d>(y.data() + offset[t]);
+      }
+    }
+  };
+  // y_out = P^T (L + mu I) E, per tet gather.
+  auto apply = [&](const std::vector<Eigen::Matrix3d>& E, Eigen::VectorXd& out) {
+    out.resize(n);
+    for(std::size_t t = 0; t < nt; ++t) {
+      Eigen::Matrix3d r = mu * E[t];
+      for(Index fi : tet_faces[t]) {
+        if(fi == Tetrahedral_mesh_3<Traits>::null_index) continue;
+        const Face& f = faces[fi];
+        if(f.a == t) r += f.w * (E[t] - E[f.b] * f.g_ab);
+        else r += f.w * (E[t] - E[f.a] * f.g_ab.transpose());
+      }
+      if(is_constrained(t)) Eigen::Map<Eigen::Matrix<double, 2, 3> >(out.data() + offset[t]) = T[t].transpose() * r;
+      else Eigen::Map<Eigen::Matrix3d>(out.data() + offset[t]) = r;
+    }
+  };
+  // Right-hand side: P^T (mu E_old - (L + mu I) X0); initial guess: the old frames projected.
+  Eigen::VectorXd b(n), x(n), Ax;
+  {
+    std::vector<Eigen::Matrix3d> E0;
+    Eigen::VectorXd zero = Eigen::VectorXd::Zero(n), AX0;
+    expand(zero, E0, true);
+    apply(E0, AX0);
+    for(std::size_t t = 0; t < nt; ++t) {
+      if(is_constrained(t)) {
+        Eigen::Map<Eigen::Matrix<double, 2, 3> >(b.data() + offset[t]) = T[t].transpose() * (mu * frames[t]);
+        Eigen::Map<Eigen::Matrix<double, 2, 3> >(x.data() + offset[t]) = T[t].transpose() * frames[t];
+      } else {
+        Eigen::Map<Eigen::Matrix3d>(b.data() + offset[t]) = mu * frames[t];
+        Eigen::Map<Eigen::Matrix3d>(x.data() + offset[t]) = frames[t];
+      }
+    }
+    b -= AX0;
+  }
+  Eigen::VectorXd inv_diag(n);
+  for(std::size_t t = 0; t < nt; ++t)
+    for(std::size_t k = offset[t]; k < offset[t + 1]; ++k) inv_diag[Eigen::Index(k)] = 1.0 / (degree[t] + mu);
+  std::vector<Eigen::Matrix3d> E;
+  expand(x, E, false);
+  apply(E, Ax);
+  Eigen::VectorXd r = b - Ax, z = inv_diag.cwiseProduct(r), d = z;
+  double rz = r.dot(z);
+  const double b_norm = (std::max)(b.norm(), 1e-300);
+  result.solver_residual = r.norm() / b_norm;
+  while(result.solver_residual > tolerance && result.solver_iterations < 20000) {
+    expand(d, E, false);
+    apply(E, Ax);
+    const double alpha = rz / d.dot(Ax);
+    x += alpha * d;
+    r -= alpha * Ax;
+    ++result.solver_iterations;
+    result.solver_residual = r.norm() / b_norm;
+    z = inv_diag.cwiseProduct(r);
+    const double rz_new = r.dot(z);
+    d = z + (rz_new / rz) * d;
+    rz = rz_new;
+  }
+  expand(x, E, true);
+
+  // Projection to rotations.
+  for(std::size_t t = 0; t < nt; ++t) {
+    if(!is_constrained(t)) {
+      Eigen::JacobiSVD<Eigen::Matrix3d> svd(E[t], Eigen::ComputeFullU | Eigen::ComputeFullV);
+      Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
+      D(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
+      frames[t] = svd.matrixU() * D * svd.matrixV().transpose();
+      continue;
+    }
+    const Index bt = constraint[t];
+    const Eigen::Vector3d& nrm = normals[bt];
+    double s = 1;
+    const int k = internal::aligned_axis(frames[t], directions[bt].normalized(), s);
+    result.constraint_error = (std::max)(result.constraint_error, (nrm.transpose() * E[t] - directions[bt].normalized().transpose() * frames[t]).cwiseAbs().maxCoeff());
+    const int a = (k + 1) % 3, c = (k + 2) % 3;
+    // 2D Procrustes of columns a and c inside the tangent plane, keeping a right-handed frame
+    const Matrix32& B = T[t];
+    Eigen::Matrix2d M;
+    M.col(0) = B.transpose() * E[t].col(a);
+    M.col(1) = B.transpose() * E[t].col(c);
+    Eigen::JacobiSVD<Eigen::Matrix2d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix2d Q = svd.matrixU() * svd.matrixV().transpose();
+    // columns (a, c, k) must be right-handed: col_a x col_c = col_k = s n, i.e. det(Q) = s
+    // (B is right-handed about n: B.col(0) x B.col(1) = n)
+    if(Q.determinant() * s < 0) {
+      Eigen::Matrix2d Dm = Eigen::Matrix2d::Identity();
+      Dm(1, 1) = -1;
+      Q = svd.matrixU() * Dm * svd.matrixV().transpose();
+    }
+    Eigen::Matrix3d R;
+    R.col(k) = s * nrm;
+    R.col(a) = B * Q.col(0);
+    R.col(c) = B * Q.col(1);
+    frames[t] = R;
+    const Eigen::Vector3d check = R.transpose() * nrm;
+    result.alignment_error = (std::max)(result.alignment_error, std::abs(1.0 - check.cwiseAbs().maxCoeff()));
+  }
+
+  // Post-checks: matchings and singular graph must be unchanged.
+  const Matchings after = compute_matchings(mesh, frames);
+  for(std::size_t f = 0; f < after.face_matching.size(); ++f)
+    result.changed_matchings += after.face_matching[f] != matchings.face_matching[f];
+  const Singularity_graph graph_after = compute_singularity_graph(mesh, frames, matchings);
+  for(std::size_t e = 0; e < graph_after.edge_valence.size(); ++e)
+    result.changed_edges += graph_after.edge_valence[e] != graph_before.edge_valence[e];
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_REALIGN_FRAME_FIELD_H
