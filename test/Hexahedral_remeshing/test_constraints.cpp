@@ -323,9 +323,11 @@ TEST(Valences, PrescriptionsOverrideTheHeuristic)
     m, k, HP::prescribed_curve_valences(by_curve, HP::prescribed_edge_valences(by_index)));
   EXPECT_EQ(k[e1], 3);
   EXPECT_EQ(s.prescribed_edges, acute_curve_edges + 1);
-  for(Index e : m.boundary_edges())
-    if(m.edge_curve(e) == acute_curve && e != e1) EXPECT_EQ(k[e], 2);
-    else if(e != e1) EXPECT_EQ(k[e], heuristic[e]);
+  for(Index e : m.boundary_edges()) {
+    if(e == e1) continue;
+    if(m.edge_curve(e) == acute_curve) { EXPECT_EQ(k[e], 2); }
+    else { EXPECT_EQ(k[e], heuristic[e]); }
+  }
   // per-edge prescriptions win over curve prescriptions; vertex pairs work in either order
   std::vector<int> k2;
   HR::compute_boundary_edge_valences(m, k2, HP::prescribed_edge_valences(by_pair, HP::valence_heuristic(HR::Valence_heuristic::GEOMETRIC)));
@@ -586,14 +588,16 @@ TEST(Constraints, AcuteLineGeometricGivesValenceZero)
   std::vector<int> k;
   const auto s = HR::compute_boundary_edge_valences(m, k, HP::valence_heuristic(HR::Valence_heuristic::GEOMETRIC));
   EXPECT_EQ(s.histogram[0], 8u);
-  for(Index e : m.boundary_edges())
-    if(HR::boundary_edge_dihedral_class(m, e) == 0) EXPECT_EQ(k[e], 0);
+  for(Index e : m.boundary_edges()) {
+    if(HR::boundary_edge_dihedral_class(m, e) == 0) { EXPECT_EQ(k[e], 0); }
+  }
   // the constraints then reproduce the normals' valences, 0 included: not meshable
   std::vector<Vec> v;
   const auto r = HR::compute_boundary_direction_constraints(m, k, v);
   EXPECT_LT(r.final_energy, quarter_pi);
-  for(Index e : m.boundary_edges())
-    if(k[e] == 0) EXPECT_EQ(int(std::floor(2 * HR::boundary_edge_direction_angle(m, e, v) / CGAL_PI + 0.5)), 0);
+  for(Index e : m.boundary_edges()) {
+    if(k[e] == 0) { EXPECT_EQ(int(std::floor(2 * HR::boundary_edge_direction_angle(m, e, v) / CGAL_PI + 0.5)), 0); }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -42,6 +42,8 @@ inline long long parse_integer(const std::string& token, const std::string& file
 /// lines are ignored.
 /// The result can be passed as the named parameter `prescribed_edge_valences`.
 ///
+/// \param filename the file to read
+/// \param mesh the mesh built from the input file whose vertex indices the file uses
 /// \returns the pairs (edge index, valence), in the order of the file
 /// \throws Input_error naming the file and the line for: a line that is not three integers, a
 ///         vertex index that is not a vertex of the input, two vertices that do not form an edge, an
@@ -107,6 +109,8 @@ read_edge_valences(const std::string& filename, const Tetrahedral_mesh_3<Traits>
 /// line, then one line `a b k` per boundary edge, in increasing edge index (`a`, `b` are the vertex
 /// indices of `mesh.edge_vertices()`, which are input indices on the boundary). The file is written
 /// atomically.
+/// \param filename the output file
+/// \param mesh the mesh the valences belong to
 /// \param valences valence per edge, as filled by `compute_boundary_edge_valences()`
 /// \throws Error if the file cannot be written or `valences` does not have one entry per edge.
 template <class Traits>
