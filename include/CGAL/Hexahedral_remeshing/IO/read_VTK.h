@@ -64,8 +64,16 @@ void read_VTK(const std::string& text, const std::string& source, Tetrahedral_so
   bool in_data = false, data_on_cells = false;
   std::size_t data_count = 0;
 
+  std::vector<std::string> sections_seen;
+  auto once = [&](const std::string& key) {
+    for(const std::string& k : sections_seen)
+      if(k == key) tk.fail("duplicate " + key + " section");
+    sections_seen.push_back(key);
+  };
+
   while(!tk.at_end()) {
     const std::string key = tk.next("a section keyword");
+    if(key == "POINTS" || key == "CELLS" || key == "CELL_TYPES") once(key);
     if(key == "POINTS") {
       const std::size_t n = tk.next_count("POINTS", 3);
       tk.next("the POINTS type");
@@ -143,6 +151,9 @@ void read_VTK(const std::string& text, const std::string& source, Tetrahedral_so
   }
   if(!have_points) tk.fail("no POINTS section");
   if(cell_types.size() != cells.size()) tk.fail("missing CELL_TYPES section");
+  if(!cell_entity.empty() && cell_entity.size() != cells.size())
+    tk.fail("CellEntityIds has " + std::to_string(cell_entity.size()) + " values for " +
+            std::to_string(cells.size()) + " cells");
 
   for(std::size_t i = 0; i < cells.size(); ++i) {
     const std::vector<std::size_t>& c = cells[i];
