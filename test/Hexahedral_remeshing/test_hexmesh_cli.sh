@@ -76,5 +76,46 @@ expect_error 3 "bad_valences.txt:3: valence 0 of edge .* is impossible" constrai
 expect_error 2 "unknown heuristic 'round'" constraints "$data/n13c_acute_line.vtk" --heuristic round
 expect_error 2 "expects an integer from 0 to 20" constraints "$data/n13c_acute_line.vtk" --refinements 2.5
 
+# Hostile inputs (issue 6): a correct result or a one-line error with exit code 3, never a crash.
+tests="$root/test/Hexahedral_remeshing/data"
+for f in two_tets.vtk two_tets_crlf.vtk two_tets.mesh two_tets_crlf.mesh near_sliver.vtk overflow_barycentre.vtk; do
+  "$hexmesh" info "$tests/$f" > "$tmp/out" 2> "$tmp/err" || fail "info $f: exit $?: $(cat "$tmp/err")"
+done
+"$hexmesh" info "$tests/two_tets_crlf.vtk" | grep -q "tetrahedra          8 (2 split" || fail "info two_tets_crlf.vtk: wrong counts"
+# coordinates of 1e30 and 1e-30: exactly the classes and angles of the unit cube
+for f in cube_1e30.vtk cube_1e-30.vtk; do
+  "$hexmesh" info "$tests/$f" --json "$tmp/$f.json" > /dev/null 2> "$tmp/err" || fail "info $f: exit $?: $(cat "$tmp/err")"
+  grep -q '"dihedral_class_histogram": \[0, 12, 6, 0, 0\], "min_dihedral_angle_degrees": 90, "max_dihedral_angle_degrees": 180' \
+    "$tmp/$f.json" || fail "info $f: wrong classes or angles: $(cat "$tmp/$f.json")"
+done
+expect_error 3 "tetrahedron 1: degenerate (zero volume)" info "$broken/degenerate_tetrahedron.vtk"   # coplanar sliver
+expect_error 3 "vertex 0: non-manifold boundary" info "$broken/nonmanifold_vertex.vtk"               # bow-tie
+expect_error 3 "non-manifold boundary" info "$broken/nonmanifold_edge.vtk"
+expect_error 3 "duplicate CELLS section" info "$broken/duplicate_cells.vtk"
+# a huge declared count in a tiny file: a clear error before any allocation (1 GiB address space is
+# plenty; not under AddressSanitizer, which reserves terabytes of shadow memory)
+limit_memory="ulimit -v 1048576"
+ldd "$hexmesh" 2>/dev/null | grep -q libasan && limit_memory=":"
+for case in "huge_count_points.vtk:5: count 4000000000 in POINTS exceeds what the file holds" \
+            "huge_count_cells.vtk:10: count 1000000000000 in CELLS exceeds what the file holds" \
+            "medit_huge_count.mesh:4: integer '99999999999999999999' out of range"; do
+  f="${case%%:*}"
+  (eval "$limit_memory"; exec "$hexmesh" info "$broken/$f") > "$tmp/out" 2> "$tmp/err"; rc=$?
+  [ "$rc" -eq 3 ] || fail "info $f: exit $rc, expected 3: $(cat "$tmp/err")"
+  grep -q -- "$case" "$tmp/err" || fail "info $f: message lacks '$case': $(cat "$tmp/err")"
+done
+# no partial output file when writing fails: the output is a directory (the rename fails), or the
+# disk is "full" (file size limit 0: every write fails with EFBIG); an existing output is kept
+mkdir -p "$tmp/outdir"
+expect_error 5 "cannot rename the temporary output file" info "$data/n13c_acute_line.vtk" --json "$tmp/outdir"
+[ -d "$tmp/outdir" ] && [ ! -e "$tmp/outdir.tmp" ] || fail "failed rename left a partial output"
+echo "previous" > "$tmp/kept.json"
+# (stderr through a pipe: the size limit applies to files only)
+(ulimit -f 0; trap '' XFSZ; exec "$hexmesh" info "$data/n13c_acute_line.vtk" --json "$tmp/kept.json") 2>&1 > /dev/null | cat > "$tmp/err"
+rc=${PIPESTATUS[0]}
+[ "$rc" -eq 5 ] || fail "write error: exit $rc, expected 5: $(cat "$tmp/err")"
+grep -q "kept.json: write error" "$tmp/err" || fail "write error message: $(cat "$tmp/err")"
+[ "$(cat "$tmp/kept.json")" = "previous" ] && [ ! -e "$tmp/kept.json.tmp" ] || fail "failed write left a partial output"
+
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"

@@ -224,7 +224,7 @@ TEST(Readers, SharedModelsMatchFileCounts)
 
 TEST(Readers, TwoTetsVtkMeditAndWindowsLineEnds)
 {
-  for(const std::string f : {"two_tets.vtk", "two_tets_crlf.vtk", "two_tets.mesh"}) {
+  for(const std::string f : {"two_tets.vtk", "two_tets_crlf.vtk", "two_tets.mesh", "two_tets_crlf.mesh"}) {
     SCOPED_TRACE(f);
     const Mesh m = load(test_data + "/" + f);
     EXPECT_EQ(m.number_of_input_vertices(), 5u);
@@ -300,6 +300,13 @@ TEST(Validation, BrokenFilesGiveClearErrors)
     {"does_not_exist.vtk", "cannot open file", 0, false},
     {"does_not_exist.off", "cannot open file", 0, false},
     {"unknown.xyz", "unknown file extension", 0, true},
+    // hostile inputs: a huge declared count in a tiny file is rejected before any allocation
+    {"huge_count_points.vtk", "count 4000000000 in POINTS exceeds what the file holds", 5, false},
+    {"huge_count_cells.vtk", "count 1000000000000 in CELLS exceeds what the file holds", 10, false},
+    {"medit_huge_count.mesh", "integer '99999999999999999999' out of range in Vertices", 4, false},
+    // found by scripts/fuzz: a second CELLS section after the CellEntityIds of the first one
+    // made the reader read past the ids
+    {"duplicate_cells.vtk", "duplicate CELLS section", 17, false},
   };
   for(const Broken_case& c : cases) {
     SCOPED_TRACE(c.file);
@@ -330,6 +337,100 @@ TEST(Validation, SoupErrorsNameTheElement)
     ADD_FAILURE();
   } catch(const HR::Input_error& e) {
     EXPECT_EQ(std::string(e.what()), "<memory>: tetrahedron 0: degenerate (zero volume)");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hostile inputs (issue 6): each gives a correct result or a clear Input_error, never a crash.
+
+namespace {
+// The unit cube of 5 tetrahedra of cube_1e30.vtk / cube_1e-30.vtk with coordinates 0 and s.
+Mesh scaled_cube(double s)
+{
+  HR::Tetrahedral_soup_3<Point> soup;
+  for(int z = 0; z < 2; ++z)
+    for(int y = 0; y < 2; ++y)
+      for(int x = 0; x < 2; ++x) soup.points.push_back(Point(x * s, y * s, z * s));
+  soup.tetrahedra = {{0, 1, 2, 4}, {3, 1, 2, 7}, {5, 1, 4, 7}, {6, 2, 4, 7}, {1, 2, 4, 7}};
+  Mesh m;
+  HR::build_tetrahedral_mesh(soup, m);
+  return m;
+}
+} // namespace
+
+TEST(Hostile, CoordinatesOf1e30And1eMinus30GiveTheResultOfTheUnitCube)
+{
+  const Mesh unit = scaled_cube(1);
+  const auto ref = HR::compute_mesh_statistics(unit);
+  EXPECT_EQ(ref.dihedral_class_histogram, (std::array<std::size_t, 5>{{0, 12, 6, 0, 0}}));
+  for(const char* f : {"cube_1e30.vtk", "cube_1e-30.vtk"}) {
+    SCOPED_TRACE(f);
+    const Mesh m = load(test_data + "/" + f);
+    check_topology(m); // exact orientations, outward boundary, rings, volume (relative tolerance)
+    ASSERT_EQ(m.number_of_tetrahedra(), unit.number_of_tetrahedra());
+    ASSERT_EQ(m.number_of_vertices(), unit.number_of_vertices());
+    for(Index t = 0; t < m.number_of_tetrahedra(); ++t)
+      EXPECT_EQ(m.tetrahedron_vertices(t), unit.tetrahedron_vertices(t)); // same split, same orientation
+    const auto s = HR::compute_mesh_statistics(m);
+    EXPECT_EQ(s.dihedral_class_histogram, ref.dihedral_class_histogram);
+    EXPECT_NEAR(s.min_dihedral_angle_degrees, 90.0, 1e-9);
+    EXPECT_NEAR(s.max_dihedral_angle_degrees, 180.0, 1e-9);
+    for(Index e : m.boundary_edges())
+      EXPECT_NEAR(HR::boundary_edge_dihedral_angle(m, e), HR::boundary_edge_dihedral_angle(unit, e), 1e-12);
+  }
+  // the barycentres of the split are exact multiples of the scale: same result for any power of two
+  for(double s : {std::ldexp(1.0, 100), std::ldexp(1.0, -100), std::ldexp(1.0, 1000), std::ldexp(1.0, -1000)}) {
+    const Mesh m = scaled_cube(s);
+    EXPECT_EQ(HR::compute_mesh_statistics(m).dihedral_class_histogram, ref.dihedral_class_histogram) << s;
+  }
+}
+
+TEST(Hostile, CoordinatesNearTheLargestDouble)
+{
+  // found by scripts/fuzz: the barycentre of the split overflowed to inf, and the exact predicates
+  // then failed on a non-finite coordinate; now it is computed without overflow
+  const Mesh m = load(test_data + "/overflow_barycentre.vtk");
+  EXPECT_EQ(m.number_of_split_tetrahedra(), 1u);
+  EXPECT_EQ(m.number_of_tetrahedra(), 4u);
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    const auto& v = m.tetrahedron_vertices(t);
+    EXPECT_EQ(CGAL::orientation(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3])), CGAL::POSITIVE);
+  }
+  for(Index v = 0; v < m.number_of_vertices(); ++v)
+    for(int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(m.point(v)[c]));
+  // the exact classes do not depend on the scale (all coordinates are 0 or 1.7e308)
+  HR::Tetrahedral_soup_3<Point> unit;
+  unit.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 1)};
+  unit.tetrahedra = {{0, 1, 2, 3}};
+  Mesh u;
+  HR::build_tetrahedral_mesh(unit, u);
+  EXPECT_EQ(HR::compute_mesh_statistics(m).dihedral_class_histogram, HR::compute_mesh_statistics(u).dihedral_class_histogram);
+}
+
+TEST(Hostile, SliversAndBowTies)
+{
+  // four coplanar, distinct points: exact zero volume (degenerate_tetrahedron.vtk, in the table
+  // above); a tetrahedron of height 1e-17 has a positive volume, exactly, and is accepted
+  const Mesh sliver = load(test_data + "/near_sliver.vtk");
+  EXPECT_EQ(sliver.number_of_tetrahedra(), 4u);
+  check_topology(sliver);
+  // a sliver whose coplanarity is exact but not visible in floating point: points on the plane
+  // x + y + z = 3 * 2^-3, each coordinate a multiple of 2^-3
+  HR::Tetrahedral_soup_3<Point> soup;
+  soup.points = {Point(0.375, 0, 0), Point(0, 0.375, 0), Point(0, 0, 0.375), Point(0.125, 0.125, 0.125),
+                 Point(1, 1, 1)};
+  soup.tetrahedra = {{0, 1, 2, 4}, {0, 1, 2, 3}};
+  Mesh m;
+  try {
+    HR::build_tetrahedral_mesh(soup, m);
+    ADD_FAILURE() << "coplanar tetrahedron accepted";
+  } catch(const HR::Input_error& e) {
+    EXPECT_EQ(e.problem(), "tetrahedron 1: degenerate (zero volume)");
+  }
+  // bow-tie: two tetrahedra sharing only a vertex, or only an edge
+  for(const char* f : {"nonmanifold_vertex.vtk", "nonmanifold_edge.vtk"}) {
+    SCOPED_TRACE(f);
+    EXPECT_THROW(load(test_data + "/broken/" + f), HR::Input_error);
   }
 }
 
@@ -496,4 +597,33 @@ TEST(Writer, VtkRoundTripKeepsVerticesAndArrays)
   for(Index v = 0; v < m.number_of_vertices(); ++v) ASSERT_EQ(r.point(v), m.point(v));
   std::remove(out.c_str());
   EXPECT_THROW(HR::IO::write_VTK("/nonexistent_dir/x.vtk", m), HR::Error);
+}
+
+TEST(Writer, FailuresLeaveNoPartialFile)
+{
+  const Mesh m = load(test_data + "/two_tets.vtk");
+  const fs::path dir = fs::temp_directory_path() / "hexrem_writer_failures";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string out = (dir / "out.vtk").string();
+  // a failure in the middle of the writing (an array of the wrong size): no file, no temporary
+  HR::IO::VTK_array bad{"bad", 1, {1.0}};
+  EXPECT_THROW(HR::IO::write_VTK(out, m, {bad}), HR::Error);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out + ".tmp"));
+  // an existing file is kept as it was
+  { std::ofstream(out) << "previous content\n"; }
+  EXPECT_THROW(HR::IO::write_VTK(out, m, {}, {bad}), HR::Error);
+  std::ifstream in(out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "previous content");
+  EXPECT_FALSE(fs::exists(out + ".tmp"));
+  // the target is a directory: the rename fails, the temporary file is removed
+  const std::string sub = (dir / "sub").string();
+  fs::create_directories(sub);
+  EXPECT_THROW(HR::IO::write_VTK(sub, m), HR::Error);
+  EXPECT_TRUE(fs::is_directory(sub));
+  EXPECT_FALSE(fs::exists(sub + ".tmp"));
+  fs::remove_all(dir);
 }

@@ -32,9 +32,11 @@ struct VTK_array
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
-/// Writes a file atomically: the content goes to `filename.tmp` first, which is renamed on
-/// success, so that a failure never leaves a partial output file.
-/// \throws Error if the file cannot be written.
+/// Writes a file atomically: `write(out)` writes the content to `filename.tmp`, which is renamed
+/// to `filename` on success. On any failure (the file cannot be created, a write fails, the disk is
+/// full, `write` throws) the temporary file is removed and `filename` is left as it was: a
+/// failure never leaves a partial output file.
+/// \throws Error if the file cannot be written; an exception thrown by `write` is propagated.
 template <class Writer>
 void write_file_atomically(const std::string& filename, const Writer& write)
 {
@@ -43,8 +45,16 @@ void write_file_atomically(const std::string& filename, const Writer& write)
     std::ofstream out(tmp);
     if(!out) throw Error(filename + ": cannot open file for writing");
     out << std::setprecision(17);
-    write(out);
-    out.flush();
+    try {
+      write(out);
+      out.flush();
+    } catch(...) {
+      out.close();
+      std::remove(tmp.c_str());
+      throw;
+    }
+    if(!out) { out.close(); std::remove(tmp.c_str()); throw Error(filename + ": write error"); }
+    out.close();
     if(!out) { std::remove(tmp.c_str()); throw Error(filename + ": write error"); }
   }
   if(std::rename(tmp.c_str(), filename.c_str()) != 0) {
