@@ -1,0 +1,113 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_IO_WRITE_VTK_FRAME_FIELD_H
+#define CGAL_HEXAHEDRAL_REMESHING_IO_WRITE_VTK_FRAME_FIELD_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK_polylines.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace IO {
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Writes a frame field as the tetrahedral mesh (see `write_VTK()`: vertex `v` of the file is vertex
+/// `v` of `mesh`, so the input vertices come first, in input order) with the cell data
+/// `VECTORS frame_u double`, `frame_v`, `frame_w`: the three axes of the frame of each tetrahedron
+/// (the columns of `frames[t]`), normalized and right-handed (`frame_w` is negated in the
+/// improbable case of a reflection: a frame is only defined up to the symmetries of the cube).
+/// In ParaView, apply a Glyph filter to each array to see the crosses.
+/// \param filename the output file (written atomically)
+/// \param mesh the mesh
+/// \param frames one frame per tetrahedron, as computed by `compute_frame_field()`
+/// \param cell_arrays further per-tetrahedron arrays, written after the frames
+/// \throws Error if the file cannot be written or `frames` does not have one entry per tetrahedron.
+template <class Traits>
+void write_VTK_frame_field(const std::string& filename, const Tetrahedral_mesh_3<Traits>& mesh,
+                           const std::vector<Eigen::Matrix3d>& frames, std::vector<VTK_array> cell_arrays = {})
+{
+  if(frames.size() != mesh.number_of_tetrahedra())
+    throw Error(filename + ": " + std::to_string(frames.size()) + " frames for " +
+                std::to_string(mesh.number_of_tetrahedra()) + " tetrahedra");
+  std::vector<VTK_array> axes(3);
+  const char* names[3] = {"frame_u", "frame_v", "frame_w"};
+  for(int c = 0; c < 3; ++c) {
+    axes[std::size_t(c)].name = names[c];
+    axes[std::size_t(c)].components = 3;
+    axes[std::size_t(c)].values.reserve(3 * frames.size());
+  }
+  for(const Eigen::Matrix3d& E : frames) {
+    Eigen::Matrix3d U;
+    for(int c = 0; c < 3; ++c) {
+      const double n = E.col(c).norm();
+      U.col(c) = n > 0 ? Eigen::Vector3d(E.col(c) / n) : Eigen::Vector3d::Zero();
+    }
+    if(U.determinant() < 0) U.col(2) = -U.col(2);
+    for(int c = 0; c < 3; ++c)
+      for(int i = 0; i < 3; ++i) axes[std::size_t(c)].values.push_back(U(i, c));
+  }
+  cell_arrays.insert(cell_arrays.begin(), axes.begin(), axes.end());
+  write_VTK(filename, mesh, cell_arrays);
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Writes the singular curves of a frame field as VTK polylines (see `write_VTK_polylines()`), one
+/// polyline per curve of `graph.curves`, through the vertices of the curve. The points of the file
+/// are the mesh vertices lying on a curve, each once, in order of first appearance; the point array
+/// `vertex` gives their index in `mesh`. Cell arrays: `valence` (3 or 5, 0 for a chain of improper
+/// edges), `edges` (number of edges of the curve) and `closed` (1 for a loop).
+/// \param filename the output file (written atomically)
+/// \param mesh the mesh the graph was computed on
+/// \param graph the singularity graph, as computed by `compute_singularity_graph()`
+/// \throws Error if the file cannot be written or a curve vertex is not a vertex of `mesh`.
+template <class Traits>
+void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_mesh_3<Traits>& mesh,
+                                 const Singularity_graph& graph)
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> local(mesh.number_of_vertices(), none);
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::vector<std::size_t> > lines;
+  std::vector<VTK_array> cell_arrays(3), point_arrays(1);
+  cell_arrays[0].name = "valence";
+  cell_arrays[1].name = "edges";
+  cell_arrays[2].name = "closed";
+  point_arrays[0].name = "vertex";
+  for(const Singular_curve& c : graph.curves) {
+    std::vector<std::size_t> line;
+    for(std::uint32_t v : c.vertices) {
+      if(v >= mesh.number_of_vertices())
+        throw Error(filename + ": curve vertex " + std::to_string(v) + " is not a vertex of the mesh");
+      if(local[v] == none) {
+        local[v] = points.size();
+        const auto& p = mesh.point(Index(v));
+        points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+        point_arrays[0].values.push_back(double(v));
+      }
+      line.push_back(local[v]);
+    }
+    if(line.size() < 2) continue; // a curve always has an edge; be safe
+    lines.push_back(line);
+    cell_arrays[0].values.push_back(double(c.valence));
+    cell_arrays[1].values.push_back(double(c.edges.size()));
+    cell_arrays[2].values.push_back(c.closed ? 1. : 0.);
+  }
+  write_VTK_polylines(filename, points, lines, cell_arrays, point_arrays);
+}
+
+} // namespace IO
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_IO_WRITE_VTK_FRAME_FIELD_H
