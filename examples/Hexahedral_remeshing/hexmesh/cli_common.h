@@ -7,9 +7,14 @@
 #define HEXMESH_CLI_COMMON_H
 
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK.h>
+#include <CGAL/Hexahedral_remeshing/boundary_edge_valences.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -24,6 +29,8 @@ namespace hexmesh {
 enum Exit_code { EXIT_OK = 0, EXIT_USAGE = 2, EXIT_INPUT = 3, EXIT_FAILURE_STAGE = 4, EXIT_OUTPUT = 5 };
 
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+// A computation stage failed (exit code EXIT_FAILURE_STAGE).
+struct Stage_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
 // Options of a subcommand: positional arguments and --name [value] pairs.
 class Arguments
@@ -65,6 +72,14 @@ public:
       throw Usage_error("option --" + name + " expects a number, got '" + v + "'");
     return d;
   }
+  // A non-negative integer option in [lo, hi].
+  int integer(const std::string& name, int fallback, int lo, int hi) const
+  {
+    const double d = number(name, fallback);
+    if(d < lo || d > hi || d != std::floor(d))
+      throw Usage_error("option --" + name + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+    return int(d);
+  }
   const std::vector<std::string>& positional() const { return m_positional; }
 
 private:
@@ -105,6 +120,23 @@ public:
     m_out << "]";
     return *this;
   }
+  // An array of arrays of numbers.
+  template <class Rows>
+  Json& matrix(const std::string& key, const Rows& rows)
+  {
+    item(key);
+    m_out << "[";
+    bool first = true;
+    for(const auto& row : rows) {
+      m_out << (first ? "[" : ", [");
+      bool first_in_row = true;
+      for(const auto& x : row) { m_out << (first_in_row ? "" : ", ") << x; first_in_row = false; }
+      m_out << "]";
+      first = false;
+    }
+    m_out << "]";
+    return *this;
+  }
   std::string str() const { return m_out.str() + "\n"; }
 
   void write(const std::string& filename) const
@@ -135,22 +167,82 @@ private:
   bool m_first = true;
 };
 
-// Prints "stage... done (1.23 s)" on stderr for stages that take more than a second.
+// Prints "hexmesh: stage: 1.23 s" on stderr for stages that take more than a second, and, within a
+// long stage, at most one progress note every few seconds.
 class Progress
 {
 public:
   explicit Progress(bool quiet) : m_quiet(quiet) {}
-  void start(const std::string& stage) { m_stage = stage; m_start = std::chrono::steady_clock::now(); }
+  void start(const std::string& stage)
+  {
+    m_stage = stage;
+    m_start = m_last_note = std::chrono::steady_clock::now();
+  }
   double finish()
   {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    if(!m_quiet && s > 1.0) std::cerr << "hexmesh: " << m_stage << ": " << std::fixed << std::setprecision(2) << s << " s\n";
+    const double s = seconds();
+    if(!m_quiet && s > 1.0)
+      std::cerr << "hexmesh: " << m_stage << ": " << std::fixed << std::setprecision(2) << s << " s\n" << std::defaultfloat;
     return s;
+  }
+  // Seconds since the stage started.
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count(); }
+  // Prints "hexmesh: stage: what (12.3 s)" if the stage runs for more than a second and no note
+  // was printed in the last `interval` seconds.
+  void note(const std::string& what, double interval = 5.0)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if(m_quiet || seconds() < 1.0 || std::chrono::duration<double>(now - m_last_note).count() < interval) return;
+    m_last_note = now;
+    std::cerr << "hexmesh: " << m_stage << ": " << what << " (" << std::fixed << std::setprecision(1) << seconds()
+              << " s)\n" << std::defaultfloat;
   }
 private:
   bool m_quiet;
   std::string m_stage;
-  std::chrono::steady_clock::time_point m_start;
+  std::chrono::steady_clock::time_point m_start, m_last_note;
+};
+
+// The --heuristic option (default low_angle).
+inline CGAL::Hexahedral_remeshing::Valence_heuristic heuristic_option(const Arguments& args)
+{
+  CGAL::Hexahedral_remeshing::Valence_heuristic heuristic = CGAL::Hexahedral_remeshing::Valence_heuristic::LOW_ANGLE;
+  if(args.has("heuristic") && !CGAL::Hexahedral_remeshing::parse_valence_heuristic(args.value("heuristic"), heuristic))
+    throw Usage_error("unknown heuristic '" + args.value("heuristic") +
+                      "' (expected geometric, low_angle, ambiguous or cap_two)");
+  return heuristic;
+}
+
+// The output files of a command: checked for writability before any computation (so that a long
+// run does not end with "cannot open file"), then written one by one, each atomically; if one
+// cannot be written, those already written by this command are removed: no partial set of outputs.
+class Output_files
+{
+public:
+  // Registers an output file; throws Error (exit 5) naming it if it cannot be created.
+  void add(const std::string& filename)
+  {
+    const std::string probe = filename + ".tmp";
+    {
+      std::ofstream out(probe, std::ios::app);
+      if(!out) throw CGAL::Hexahedral_remeshing::Error(filename + ": cannot open file for writing");
+    }
+    std::remove(probe.c_str());
+  }
+  // Runs `write` (which writes `filenames`); on failure removes every file written so far.
+  void write(const std::vector<std::string>& filenames, const std::function<void()>& write)
+  {
+    try {
+      write();
+    } catch(...) {
+      for(const std::string& f : m_written) std::remove(f.c_str());
+      m_written.clear();
+      throw;
+    }
+    m_written.insert(m_written.end(), filenames.begin(), filenames.end());
+  }
+private:
+  std::vector<std::string> m_written;
 };
 
 } // namespace hexmesh

@@ -38,14 +38,8 @@ inline int command_constraints(const Arguments& args)
   if(args.positional().size() != 1) throw Usage_error("constraints expects one input file");
   const std::string& in = args.positional()[0];
 
-  HR::Valence_heuristic heuristic = HR::Valence_heuristic::LOW_ANGLE;
-  if(args.has("heuristic") && !HR::parse_valence_heuristic(args.value("heuristic"), heuristic))
-    throw Usage_error("unknown heuristic '" + args.value("heuristic") +
-                      "' (expected geometric, low_angle, ambiguous or cap_two)");
-  const double refinements_value = args.number("refinements", 9);
-  if(refinements_value < 0 || refinements_value > 20 || refinements_value != std::floor(refinements_value))
-    throw Usage_error("option --refinements expects an integer from 0 to 20");
-  const int refinements = int(refinements_value);
+  const HR::Valence_heuristic heuristic = heuristic_option(args);
+  const int refinements = args.integer("refinements", 9, 0, 20);
 
   Mesh mesh;
   read_input_mesh(args, in, mesh);

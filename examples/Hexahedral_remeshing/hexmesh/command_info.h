@@ -57,11 +57,14 @@ inline void print_statistics(std::ostream& out, const std::string& file, const C
 // Options every command reading a mesh accepts.
 inline std::vector<std::string> input_options() { return {"max-volume", "radius-edge"}; }
 
-inline void read_input_mesh(const Arguments& args, const std::string& in, Mesh& mesh)
+// Reads the input; `split_chords` also splits the interior edges joining two boundary vertices
+// (what the frame-field pipeline needs at acute features).
+inline void read_input_mesh(const Arguments& args, const std::string& in, Mesh& mesh, bool split_chords = false)
 {
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
   CGAL::Hexahedral_remeshing::IO::read_tetrahedral_mesh(
-    in, mesh, HP::maximum_tetrahedron_volume(args.number("max-volume", 0.), HP::radius_edge_ratio(args.number("radius-edge", 2.))));
+    in, mesh, HP::maximum_tetrahedron_volume(args.number("max-volume", 0.), HP::radius_edge_ratio(args.number("radius-edge", 2.),
+              HP::split_boundary_chords(split_chords))));
 }
 
 inline int command_info(const Arguments& args)

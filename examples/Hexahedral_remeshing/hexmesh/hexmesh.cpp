@@ -6,6 +6,7 @@
 #include "cli_common.h"
 #include "command_info.h"
 #include "command_constraints.h"
+#include "command_frames.h"
 
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
@@ -28,6 +29,24 @@ const char* usage =
   "                            --vtk writes the boundary triangles with n, v, E_i as cell data;\n"
   "                            --save-valences writes the chosen valences in the 'a b k' format.\n"
   "                            Warnings (one line per kind) for valence-0 edges and E_i >= pi/4.\n"
+  "  frames IN [--heuristic NAME] [--valences FILE] [--baseline] [--no-realign]\n"
+  "         [--frames OUT.vtk] [--singularities OUT.vtk] [--json FILE] [--valences-out FILE]\n"
+  "         [--cubecover PREFIX] [--no-chord-split] [--threads N] [--quiet]\n"
+  "                            the whole frame-field pipeline: valences (as for constraints),\n"
+  "                            direction constraints, smooth frame field, matchings, singular\n"
+  "                            curves, achieved boundary valences, realignment with the normals;\n"
+  "                            prints a summary (stdout), progress of stages over 1 s (stderr).\n"
+  "                            --baseline: field aligned with the normals, no valences/constraints;\n"
+  "                            --no-realign: keep the field aligned with the constraints;\n"
+  "                            --frames: tet mesh (VTK) with cell vectors frame_u, frame_v, frame_w;\n"
+  "                            --singularities: singular curves as VTK polylines (valence, edges);\n"
+  "                            --json: report (schema in the user manual);\n"
+  "                            --valences-out: prescribed valences as 'a b k' (vertex indices of\n"
+  "                            the --frames file, whose first vertices are the input's);\n"
+  "                            --cubecover: PREFIX.mesh, PREFIX.fra, PREFIX.perm for CubeCover;\n"
+  "                            --no-chord-split: keep interior edges joining two boundary vertices\n"
+  "                            (split by default: acute features need it); --threads N: OpenMP\n"
+  "                            threads; --quiet: no summary nor progress (warnings remain).\n"
   "\n"
   "Inputs: .vtk (VTK legacy ASCII unstructured grid, gmsh style), .mesh (MEDIT),\n"
   "        .off .obj .stl .ply (closed surfaces, tetrahedralized with TetGen).\n"
@@ -51,10 +70,16 @@ int main(int argc, char** argv)
     }
     if(command == "constraints")
       return hexmesh::command_constraints(hexmesh::Arguments(argc, argv, 2, hexmesh::constraints_options(), {}));
+    if(command == "frames")
+      return hexmesh::command_frames(
+        hexmesh::Arguments(argc, argv, 2, hexmesh::frames_options(), hexmesh::frames_flags()));
     throw hexmesh::Usage_error("unknown command '" + command + "'");
   } catch(const hexmesh::Usage_error& e) {
     std::cerr << "hexmesh: " << e.what() << " (see hexmesh --help)\n";
     return hexmesh::EXIT_USAGE;
+  } catch(const hexmesh::Stage_error& e) {
+    std::cerr << "hexmesh: " << e.what() << "\n";
+    return hexmesh::EXIT_FAILURE_STAGE;
   } catch(const CGAL::Hexahedral_remeshing::Input_error& e) {
     std::cerr << "hexmesh: " << e.what() << "\n";
     return hexmesh::EXIT_INPUT;

@@ -1,0 +1,286 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+//
+// hexmesh frames IN [--heuristic NAME] [--valences FILE] [--baseline] [--no-realign] [--no-chord-split]
+//                   [--frames OUT.vtk] [--singularities OUT.vtk] [--json FILE] [--valences-out FILE]
+//                   [--cubecover PREFIX] [--threads N] [--quiet]
+// The frame-field pipeline of Desobry et al.: valences, direction constraints, frame field,
+// matchings and singularity graph, realignment with the normals; exports for ParaView and CubeCover.
+#ifndef HEXMESH_COMMAND_FRAMES_H
+#define HEXMESH_COMMAND_FRAMES_H
+
+#include "cli_common.h"
+#include "command_info.h"
+
+#include <CGAL/Hexahedral_remeshing/IO/edge_valences.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_CubeCover.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
+#include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
+#include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hexmesh {
+
+inline std::vector<std::string> frames_options()
+{
+  std::vector<std::string> options = input_options();
+  for(const char* o : {"heuristic", "valences", "frames", "singularities", "json", "valences-out", "cubecover", "threads"})
+    options.push_back(o);
+  return options;
+}
+
+inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "no-chord-split", "quiet"}; }
+
+// Pipeline visitor: per-stage progress on stderr (stages over a second), smoothing notes.
+struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipeline_visitor
+{
+  explicit Frames_progress_visitor(Progress& p) : progress(p) {}
+  void start_stage(const std::string& stage) { progress.start(stage); }
+  void end_stage(const std::string& /*stage*/, double /*seconds*/) { progress.finish(); }
+  void smoothing_progress(double energy, int iterations)
+  {
+    std::ostringstream s;
+    s << iterations << " L-BFGS iterations, energy " << std::setprecision(6) << energy;
+    progress.note(s.str());
+  }
+  Progress& progress;
+};
+
+inline int command_frames(const Arguments& args)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  typedef Mesh::Index Index;
+
+  // Usage first, then the outputs, then the inputs: every error before any computation.
+  if(args.positional().size() != 1) throw Usage_error("frames expects one input file");
+  const std::string& in = args.positional()[0];
+  const HR::Valence_heuristic heuristic = heuristic_option(args);
+  const bool baseline = args.has("baseline"), realign = !args.has("no-realign"), quiet = args.has("quiet");
+  if(baseline && (args.has("heuristic") || args.has("valences")))
+    throw Usage_error("--baseline aligns the field with the normals: it takes no --heuristic nor --valences");
+  if(args.has("threads")) {
+    const int threads = args.integer("threads", 1, 1, 1024);
+#ifdef _OPENMP
+    omp_set_num_threads(threads);
+#else
+    (void)threads;
+#endif
+  }
+  Output_files outputs;
+  const std::string cubecover = args.value("cubecover");
+  for(const char* o : {"frames", "singularities", "valences-out", "json"})
+    if(args.has(o)) outputs.add(args.value(o));
+  if(args.has("cubecover")) {
+    if(cubecover.empty()) throw Usage_error("option --cubecover expects a path prefix");
+    for(const char* ext : {".mesh", ".fra", ".perm"}) outputs.add(cubecover + ext);
+  }
+
+  Progress progress(quiet);
+  progress.start("reading " + in);
+  Mesh mesh;
+  read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
+  std::vector<std::pair<Index, int> > prescribed;
+  if(args.has("valences")) prescribed = HR::IO::read_edge_valences(args.value("valences"), mesh);
+  const double read_seconds = progress.finish();
+
+  Frames_progress_visitor visitor(progress);
+  HR::Frame_field_pipeline_result r;
+  try {
+    r = HR::compute_frame_field_pipeline(
+      mesh, HP::valence_heuristic(heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
+                                  HP::baseline(baseline, HP::realignment(realign)))).visitor(std::ref(visitor)));
+  } catch(const HR::Input_error&) {
+    throw; // an impossible prescription: exit 3
+  } catch(const std::exception& e) {
+    throw Stage_error(std::string("frame-field pipeline on ") + in + ": " + e.what());
+  }
+  const HR::Mesh_statistics statistics = HR::compute_mesh_statistics(mesh);
+
+  // Achieved valence by exact dihedral class: row = class 0..4, column = achieved valence 0..4.
+  std::array<std::array<std::size_t, 5>, 5> by_class{};
+  for(Index e : mesh.boundary_edges()) {
+    const int c = HR::boundary_edge_dihedral_class(mesh, e);
+    const int k = r.boundary_valences.achieved[e];
+    ++by_class[std::size_t(std::min(std::max(c, 0), 4))][std::size_t(std::min(std::max(k, 0), 4))];
+  }
+  const HR::Singularity_graph& g = r.singularities;
+  auto curve_edges = [&](int valence) {
+    std::size_t n = 0;
+    for(const HR::Singular_curve& c : g.curves) if(c.valence == valence) n += c.edges.size();
+    return n;
+  };
+
+  // Outputs.
+  progress.start("writing the outputs");
+  if(args.has("frames")) {
+    const std::string f = args.value("frames");
+    outputs.write({f}, [&] { HR::IO::write_VTK_frame_field(f, mesh, r.frames); });
+  }
+  if(args.has("singularities")) {
+    const std::string f = args.value("singularities");
+    outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, g); });
+  }
+  if(args.has("valences-out")) {
+    const std::string f = args.value("valences-out");
+    outputs.write({f}, [&] { HR::IO::write_edge_valences(f, mesh, r.valences); });
+  }
+  if(args.has("cubecover"))
+    outputs.write({cubecover + ".mesh", cubecover + ".fra", cubecover + ".perm"},
+                  [&] { HR::IO::write_CubeCover(cubecover, mesh, r.frames, r.matchings); });
+  if(args.has("json")) {
+    Json json;
+    json.begin().value("input", in).value("baseline", r.baseline).value("realigned", r.realigned);
+    add_statistics(json, statistics);
+    json.begin("preprocessing")
+        .value("split_boundary_chords", !args.has("no-chord-split"))
+        .value("split_chords", mesh.number_of_split_chords())
+        .value("split_tetrahedra", mesh.number_of_split_tetrahedra())
+        .end();
+    json.begin("valences")
+        .value("heuristic", baseline ? "geometric (baseline)" : HR::valence_heuristic_name(heuristic))
+        .value("prescribed_edges", r.valence_statistics.prescribed_edges)
+        .value("edges_differing_from_geometry", r.valence_statistics.edges_differing_from_geometry)
+        .array("histogram", r.valence_statistics.histogram)
+        .end();
+    json.begin("constraints")
+        .value("E_initial", r.constraints.initial_energy)
+        .value("E_final", r.constraints.final_energy)
+        .value("failed_faces", r.constraints.failed_faces.size())
+        .value("iterations", r.constraints.iterations)
+        .value("converged", r.constraints.converged)
+        .end();
+    json.begin("frame_field")
+        .value("energy", r.frame_field.energy)
+        .value("initial_energy", r.frame_field.initial_energy)
+        .value("relaxation_iterations", r.frame_field.relaxation_iterations)
+        .value("relaxation_residual", r.frame_field.relaxation_residual)
+        .value("smoothing_iterations", r.frame_field.smoothing_iterations)
+        .value("under_resolved_faces", r.matchings.under_resolved_faces)
+        .value("seconds", r.frame_field.seconds)
+        .end();
+    json.begin("singularities")
+        .value("valence3_edges", g.valence3_edges)
+        .value("valence5_edges", g.valence5_edges)
+        .value("improper_edges", g.improper_edges)
+        .value("curves", g.curves.size())
+        .value("valence3_curves", g.number_of_curves(3))
+        .value("valence5_curves", g.number_of_curves(5))
+        .value("improper_curves", g.number_of_curves(0))
+        .value("dangling_vertices", g.dangling_vertices.size())
+        .value("zipper_vertices", g.zipper_vertices.size())
+        .end();
+    json.begin("boundary_valences")
+        .value("total", r.boundary_valences.total)
+        .value("matched", r.boundary_valences.matched)
+        .value("mismatched", r.boundary_valences.mismatched)
+        .array("histogram", r.boundary_valences.histogram)
+        .matrix("by_dihedral_class", by_class)
+        .value("max_deviation", r.boundary_valences.max_deviation)
+        .end();
+    json.begin("realignment")
+        .value("performed", r.realigned)
+        .value("alignment_error", r.realignment.alignment_error)
+        .value("constraint_error", r.realignment.constraint_error)
+        .value("changed_matchings", r.realignment.changed_matchings)
+        .value("changed_edges", r.realignment.changed_edges)
+        .value("solver_iterations", r.realignment.solver_iterations)
+        .end();
+    json.begin("seconds")
+        .value("read", read_seconds)
+        .value("valences", r.valences_seconds)
+        .value("constraints", r.constraints_seconds)
+        .value("setup", r.frame_field.setup_seconds)
+        .value("initialization", r.frame_field.initialization_seconds)
+        .value("smoothing", r.frame_field.smoothing_seconds)
+        .value("matchings", r.matchings_seconds)
+        .value("realignment", r.realignment.seconds)
+        .value("total", r.seconds)
+        .end();
+    json.end();
+    const std::string f = args.value("json");
+    outputs.write({f}, [&] { json.write(f); });
+  }
+  progress.finish();
+
+  if(!quiet) {
+    const double deg = 180 / CGAL_PI;
+    auto histogram = [](const auto& h) {
+      std::ostringstream s;
+      bool first = true;
+      for(std::size_t k = 0; k < h.size(); ++k)
+        if(h[k] > 0) { s << (first ? "" : ", ") << "k=" << k << ": " << h[k]; first = false; }
+      return s.str();
+    };
+    std::cout << in << ": frame field " << (baseline ? "aligned with the normals (baseline)" : "with prescribed boundary valences")
+              << "\n"
+              << "  mesh                " << mesh.number_of_tetrahedra() << " tetrahedra (" << mesh.number_of_split_chords()
+              << " boundary chords split), " << mesh.number_of_boundary_triangles() << " boundary triangles, "
+              << mesh.boundary_edges().size() << " boundary edges\n"
+              << "  valences            " << (baseline ? "geometric" : HR::valence_heuristic_name(heuristic)) << " ("
+              << r.valence_statistics.prescribed_edges << " prescribed): " << histogram(r.valence_statistics.histogram) << "\n"
+              << std::fixed << std::setprecision(4)
+              << "  E(n) -> E(v)        " << r.constraints.initial_energy << " -> " << r.constraints.final_energy << " rad ("
+              << std::setprecision(1) << r.constraints.initial_energy * deg << " -> " << r.constraints.final_energy * deg
+              << " deg), " << r.constraints.failed_faces.size() << " triangles with E_i >= pi/4\n"
+              << std::setprecision(4)
+              << "  frame field         energy " << r.frame_field.energy << " (" << r.frame_field.initial_energy
+              << " after the relaxation), " << r.frame_field.smoothing_iterations << " L-BFGS iterations\n"
+              << "  singular curves     " << g.number_of_curves(3) << " of valence 3 (" << curve_edges(3) << " edges), "
+              << g.number_of_curves(5) << " of valence 5 (" << curve_edges(5) << " edges), " << g.number_of_curves(0)
+              << " improper (" << g.improper_edges << " edges); " << g.dangling_vertices.size() << " dangling ends, "
+              << g.zipper_vertices.size() << " zippers\n"
+              << "  boundary valences   " << r.boundary_valences.matched << "/" << r.boundary_valences.total
+              << " as prescribed (" << r.boundary_valences.mismatched << " mismatched); achieved "
+              << histogram(r.boundary_valences.histogram) << "; edges below 45 degrees: " << histogram(by_class[0]) << "\n";
+    if(r.realigned)
+      std::cout << std::scientific << std::setprecision(1) << "  realignment         alignment error "
+                << r.realignment.alignment_error << ", " << r.realignment.changed_matchings << " matchings and "
+                << r.realignment.changed_edges << " edge types changed\n";
+    else
+      std::cout << "  realignment         not run" << (baseline ? " (the baseline is aligned with the normals)" : "") << "\n";
+    std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", valences "
+              << r.valences_seconds << ", constraints " << r.constraints_seconds << ", setup " << r.frame_field.setup_seconds
+              << ", initialization " << r.frame_field.initialization_seconds << ", smoothing "
+              << r.frame_field.smoothing_seconds << ", matchings " << r.matchings_seconds << ", realignment "
+              << r.realignment.seconds << ", total " << r.seconds << "\n" << std::defaultfloat;
+    if(args.has("frames"))
+      std::cout << "  ParaView            " << args.value("frames") << " (tetrahedra; Glyph filter on frame_u, frame_v, frame_w)\n";
+    if(args.has("singularities"))
+      std::cout << "  ParaView            " << args.value("singularities") << " (singular curves; color by valence)\n";
+    if(args.has("cubecover"))
+      std::cout << "  CubeCover           " << cubecover << ".mesh, " << cubecover << ".fra, " << cubecover << ".perm\n";
+    if(args.has("valences-out")) std::cout << "  valences            " << args.value("valences-out") << " (a b k)\n";
+    if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
+  }
+
+  // Warnings: one line per kind of problem.
+  if(r.valence_statistics.histogram[0] > 0)
+    std::cerr << "hexmesh: warning: " << r.valence_statistics.histogram[0] << " boundary edge"
+              << (r.valence_statistics.histogram[0] > 1 ? "s get" : " gets") << " valence k = 0 (dihedral angle below 45 degrees"
+              << (baseline ? " with the normal-aligned baseline" : "") << "): no hexahedron can fill a valence-0 edge\n";
+  if(r.boundary_valences.mismatched > 0)
+    std::cerr << "hexmesh: warning: " << r.boundary_valences.mismatched << " of " << r.boundary_valences.total
+              << " boundary edges do not get the prescribed valence (E(v) = " << std::setprecision(4)
+              << r.constraints.final_energy << " rad)\n" << std::defaultfloat;
+  if(r.realigned && (r.realignment.changed_matchings > 0 || r.realignment.changed_edges > 0))
+    std::cerr << "hexmesh: warning: the realignment changed " << r.realignment.changed_matchings << " matchings and "
+              << r.realignment.changed_edges << " edge types (the singularity graph was not kept exactly)\n";
+  return EXIT_OK;
+}
+
+} // namespace hexmesh
+
+#endif // HEXMESH_COMMAND_FRAMES_H
