@@ -117,5 +117,57 @@ rc=${PIPESTATUS[0]}
 grep -q "kept.json: write error" "$tmp/err" || fail "write error message: $(cat "$tmp/err")"
 [ "$(cat "$tmp/kept.json")" = "previous" ] && [ ! -e "$tmp/kept.json.tmp" ] || fail "failed write left a partial output"
 
+# frames: the whole pipeline on the shipped model (8 edges below 45 degrees)
+check="$root/test/Hexahedral_remeshing/check_frames_outputs.py"
+have_python=1; command -v python3 > /dev/null || { have_python=0; echo "note: no python3, output files only grepped"; }
+py_check() { [ "$have_python" -eq 0 ] || python3 "$check" "$@" || fail "check_frames_outputs.py $*"; }
+n13c="$data/n13c_acute_line.vtk"
+"$hexmesh" frames "$n13c" --frames "$tmp/f.vtk" --singularities "$tmp/s.vtk" --json "$tmp/f.json" \
+  --valences-out "$tmp/f_valences.txt" --cubecover "$tmp/cc" > "$tmp/out" 2> "$tmp/err" || fail "frames exit code $?"
+for f in f.vtk s.vtk f.json f_valences.txt cc.mesh cc.fra cc.perm; do [ -s "$tmp/$f" ] || fail "frames did not write $f"; done
+ls "$tmp" | grep -q '\.tmp$' && fail "frames left temporary files: $(ls "$tmp")"
+grep -q "boundary valences   675/675 as prescribed" "$tmp/out" || fail "frames summary: $(cat "$tmp/out")"
+grep -q "E(n) -> E(v)" "$tmp/out" && grep -q "singular curves" "$tmp/out" && grep -q "ParaView .*f.vtk" "$tmp/out" \
+  || fail "frames summary lacks E(n) -> E(v), the curves or the ParaView files: $(cat "$tmp/out")"
+grep -q '"mismatched": 0' "$tmp/f.json" || fail "frames JSON: mismatched boundary valences"
+grep -q '"by_dihedral_class": \[\[0, 8, 0, 0, 0\]' "$tmp/f.json" || fail "frames JSON: class-0 edges did not all get valence 1"
+[ "$(grep -c '^VECTORS frame_[uvw] double' "$tmp/f.vtk")" -eq 3 ] || fail "frames VTK lacks frame_u, frame_v, frame_w"
+grep -q '^DATASET POLYDATA' "$tmp/s.vtk" && grep -q '^LINES ' "$tmp/s.vtk" || fail "singularities VTK is not a polyline file"
+python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$tmp/f.json" 2>/dev/null || [ "$have_python" -eq 0 ] || fail "frames JSON is not valid JSON"
+py_check report "$tmp/f.json"
+py_check frames "$tmp/f.vtk" "$tmp/f.json"
+py_check singularities "$tmp/s.vtk" "$tmp/f.json"
+py_check cubecover "$tmp/cc" "$tmp/f.json"
+"$hexmesh" info "$tmp/cc.mesh" > /dev/null 2>&1 || fail "the CubeCover .mesh does not read back"
+# the written valences read back (vertex indices of f.vtk): same prescription with the geometric heuristic
+"$hexmesh" frames "$n13c" --heuristic geometric --valences "$tmp/f_valences.txt" --no-realign --quiet \
+  --json "$tmp/f2.json" > "$tmp/out" 2> "$tmp/err" || fail "frames --valences (written file) exit code $?"
+[ ! -s "$tmp/out" ] || fail "frames --quiet printed: $(cat "$tmp/out")"
+grep -q '"prescribed_edges": 675' "$tmp/f2.json" && grep -q '"histogram": \[0, 60, 615, 0, 0, 0, 0\]' "$tmp/f2.json" \
+  || fail "frames: --valences-out does not round trip: $(cat "$tmp/f2.json")"
+py_check report "$tmp/f2.json"
+# baseline: the normal-aligned field gives k = 0 on the 8 acute edges
+"$hexmesh" frames "$n13c" --baseline --json "$tmp/b.json" > "$tmp/out" 2> "$tmp/err" || fail "frames --baseline exit code $?"
+grep -q '"histogram": \[8, 52, 615, 0, 0\]' "$tmp/b.json" || fail "baseline: boundary valences histogram: $(cat "$tmp/b.json")"
+grep -q "8 boundary edges get valence k = 0" "$tmp/err" || fail "baseline: no valence-0 warning: $(cat "$tmp/err")"
+py_check report "$tmp/b.json" baseline
+# errors: exit code, one line naming the file, no output file left behind
+mkdir "$tmp/e"
+outputs=(--frames "$tmp/e/f.vtk" --singularities "$tmp/e/s.vtk" --json "$tmp/e/r.json" --cubecover "$tmp/e/cc")
+expect_error 3 "does_not_exist.vtk: cannot open file" frames "$tmp/does_not_exist.vtk" "${outputs[@]}"
+expect_error 3 "malformed_number.vtk:7: malformed number" frames "$broken/malformed_number.vtk" "${outputs[@]}"
+printf '# a b k\n0 0 2\n' > "$tmp/bad_valences.txt"
+expect_error 3 "bad_valences.txt:2: vertices 0 0 do not form an edge" frames "$n13c" --valences "$tmp/bad_valences.txt" "${outputs[@]}"
+printf '%s 9\n' "$(grep -v '^#' "$tmp/f_valences.txt" | head -1 | cut -d' ' -f1-2)" > "$tmp/bad_valences.txt"
+expect_error 3 "bad_valences.txt:1: valence 9 of edge .* is impossible" frames "$n13c" --valences "$tmp/bad_valences.txt" "${outputs[@]}"
+expect_error 2 "takes no --heuristic nor --valences" frames "$n13c" --baseline --heuristic geometric
+expect_error 2 "option --threads expects an integer" frames "$n13c" --threads 0
+expect_error 5 "no/such/dir/r.json: cannot open file for writing" frames "$n13c" --frames "$tmp/e/f.vtk" --json "$tmp/no/such/dir/r.json"
+[ -z "$(ls -A "$tmp/e")" ] || fail "failed frames runs left files behind: $(ls "$tmp/e")"
+# an output that fails after the computation (a directory in the way): the outputs already written are removed
+mkdir "$tmp/e/cc.perm"
+expect_error 5 "cc.perm: cannot rename" frames "$n13c" --no-realign --quiet "${outputs[@]}"
+[ "$(ls -A "$tmp/e")" = "cc.perm" ] || fail "a failed output left a partial set of outputs: $(ls "$tmp/e")"
+
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"
