@@ -17,10 +17,17 @@ namespace Hexahedral_remeshing {
 /// builds faces, boundary triangles, edges and their rings, components, and transfers the feature
 /// hints of the soup (patches, curves, corners). Runs in O(n log n).
 ///
+/// Every finite `double` coordinate is accepted, from subnormal numbers to the largest double:
+/// orientations and the topology are decided exactly, and the barycentres of the split are computed
+/// without overflow. A tetrahedron whose four points are coplanar is degenerate even when this is
+/// not visible in floating point (the test is exact); a sliver of positive volume, however thin, is
+/// valid.
+///
 /// \throws Input_error naming the source, the element and the problem for: no tetrahedra, a
 /// non-finite coordinate, an out-of-range index, a degenerate tetrahedron (exact test), a duplicated
 /// tetrahedron, a face shared by more than two tetrahedra, overlapping tetrahedra, a non-manifold
-/// boundary edge or vertex.
+/// boundary edge or vertex (a "bow-tie"), and, with `split_multi_boundary_tetrahedra`, a tetrahedron
+/// so flat that a child of its split at the rounded barycentre would be degenerate.
 ///
 /// \param soup the input
 /// \param mesh the output (overwritten)

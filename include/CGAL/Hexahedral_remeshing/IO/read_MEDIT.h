@@ -20,8 +20,15 @@ namespace IO {
 /// `Corners`. The blocks `Quadrilaterals`, `Hexahedra`, `Ridges`, `RequiredVertices`,
 /// `RequiredEdges`, `Prisms` and `Pyramids` are skipped, as are `#` comments.
 ///
-/// \throws Input_error (file, line, problem) for an unreadable, truncated or malformed file;
-///         Unsupported_input for binary `.meshb` content or 2D meshes.
+/// Windows line ends are accepted. A count larger than what the rest of the file can hold is
+/// rejected before anything is allocated.
+///
+/// \param text the content of the file
+/// \param source the name of the file, used in error messages
+/// \param soup the output (overwritten)
+/// \throws Input_error (file, line, problem) for an unreadable, truncated or malformed file, a count
+///         larger than the file, an index below 1;
+///         Unsupported_input for an unknown keyword (binary `.meshb` content) or a 2D mesh.
 template <class Point>
 void read_MEDIT(const std::string& text, const std::string& source, Tetrahedral_soup_3<Point>& soup)
 {

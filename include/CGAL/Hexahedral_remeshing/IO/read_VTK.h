@@ -33,7 +33,16 @@ inline void skip_values(Hexahedral_remeshing::internal::Text_tokenizer& tk, std:
 /// cell array when the file has one. Other cell types are ignored. Binary files are rejected with
 /// `Unsupported_input`.
 ///
-/// \throws Input_error (file, line, problem) for an unreadable, truncated or malformed file.
+/// Windows line ends are accepted. A count (of points, cells, data values) larger than what the
+/// rest of the file can hold is rejected before anything is allocated.
+///
+/// \param text the content of the file
+/// \param source the name of the file, used in error messages
+/// \param soup the output (overwritten)
+/// \throws Input_error (file, line, problem) for an unreadable, truncated or malformed file, a count
+///         larger than the file, a duplicated `POINTS`, `CELLS` or `CELL_TYPES` section, a
+///         `CellEntityIds` array whose size differs from the number of cells;
+///         Unsupported_input for a binary file or a dataset other than `UNSTRUCTURED_GRID`.
 template <class Point>
 void read_VTK(const std::string& text, const std::string& source, Tetrahedral_soup_3<Point>& soup)
 {
