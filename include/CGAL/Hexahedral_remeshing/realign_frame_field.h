@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -87,7 +88,7 @@ inline Eigen::Matrix<double, 3, 2> tangent_basis(const Eigen::Vector3d& n)
 ///   \cgalParamNBegin{relaxation_tolerance}
 ///     \cgalParamDescription{relative residual at which the conjugate gradients stop}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{`1e-8`}
+///     \cgalParamDefault{`1e-5`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Error if the sizes do not match the mesh.
@@ -100,7 +101,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   typedef Eigen::Matrix<double, 3, 2> Matrix32;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-8);
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-5);
   const auto start = std::chrono::steady_clock::now();
   const std::size_t nt = mesh.number_of_tetrahedra();
   if(frames.size() != nt || directions.size() != mesh.number_of_boundary_triangles() ||
@@ -124,15 +125,32 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     X0[t] = normals[b] * c.transpose();
     T[t] = internal::tangent_basis(normals[b]);
   }
-  // Interior faces with their matching step in both directions: E_from ~ E_to g.
-  struct Face { Index a, b; Eigen::Matrix3d g_ab; double w; };
+  // Interior faces with their matching step in both directions (E_from ~ E_to g), stored as signed
+  // permutations: column j of E g is sign[j] * column perm[j] of E (no 3x3 product in the solver).
+  struct Signed_permutation
+  {
+    std::array<int, 3> perm;
+    std::array<double, 3> sign;
+    explicit Signed_permutation(const Eigen::Matrix3d& g)
+    {
+      for(int j = 0; j < 3; ++j)
+        for(int i = 0; i < 3; ++i)
+          if(g(i, j) != 0) { perm[j] = i; sign[j] = g(i, j); }
+    }
+    void add_product(const Eigen::Matrix3d& E, double w, Eigen::Matrix3d& out) const // out -= w E g
+    {
+      for(int j = 0; j < 3; ++j) out.col(j) -= (w * sign[j]) * E.col(perm[j]);
+    }
+  };
+  struct Face { Index a, b; Signed_permutation g_ab, g_ba; double w; };
   std::vector<Face> faces;
   std::vector<std::array<Index, 4> > tet_faces(nt, {Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index,
                                                     Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index});
   for(Index f = 0; f < mesh.number_of_faces(); ++f) {
     const auto& ft = mesh.face_tetrahedra(f);
     if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) continue;
-    faces.push_back({ft[0], ft[1], group.matrix(matchings.face_matching[f]), 1.0});
+    const Eigen::Matrix3d& g = group.matrix(matchings.face_matching[f]);
+    faces.push_back({ft[0], ft[1], Signed_permutation(g), Signed_permutation(g.transpose()), 1.0});
   }
   for(Index fi = 0; fi < faces.size(); ++fi)
     for(Index t : {faces[fi].a, faces[fi].b})
@@ -151,7 +169,11 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   auto is_constrained = [&](std::size_t t) { return constraint[t] != Tetrahedral_mesh_3<Traits>::null_index; };
   auto expand = [&](const Eigen::VectorXd& y, std::vector<Eigen::Matrix3d>& E, bool with_offset) {
     E.resize(nt);
-    for(std::size_t t = 0; t < nt; ++t) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for(std::ptrdiff_t ti = 0; ti < std::ptrdiff_t(nt); ++ti) {
+      const std::size_t t = std::size_t(ti);
       if(is_constrained(t)) {
         E[t] = T[t] * Eigen::Map<const Eigen::Matrix<double, 2, 3> >(y.data() + offset[t]);
         if(with_offset) E[t] += X0[t];
@@ -163,13 +185,17 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   // y_out = P^T (L + mu I) E, per tet gather.
   auto apply = [&](const std::vector<Eigen::Matrix3d>& E, Eigen::VectorXd& out) {
     out.resize(n);
-    for(std::size_t t = 0; t < nt; ++t) {
-      Eigen::Matrix3d r = mu * E[t];
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for(std::ptrdiff_t ti = 0; ti < std::ptrdiff_t(nt); ++ti) {
+      const std::size_t t = std::size_t(ti);
+      Eigen::Matrix3d r = (mu + degree[t]) * E[t];
       for(Index fi : tet_faces[t]) {
         if(fi == Tetrahedral_mesh_3<Traits>::null_index) continue;
         const Face& f = faces[fi];
-        if(f.a == t) r += f.w * (E[t] - E[f.b] * f.g_ab);
-        else r += f.w * (E[t] - E[f.a] * f.g_ab.transpose());
+        if(f.a == t) f.g_ab.add_product(E[f.b], f.w, r);
+        else f.g_ba.add_product(E[f.a], f.w, r);
       }
       if(is_constrained(t)) Eigen::Map<Eigen::Matrix<double, 2, 3> >(out.data() + offset[t]) = T[t].transpose() * r;
       else Eigen::Map<Eigen::Matrix3d>(out.data() + offset[t]) = r;

@@ -50,7 +50,11 @@ public:
   void expand(const Eigen::VectorXd& x, std::vector<Vector9>& q, bool with_offset) const
   {
     q.resize(m_p.number_of_tets);
-    for(std::size_t t = 0; t < m_p.number_of_tets; ++t) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for(std::ptrdiff_t ti = 0; ti < std::ptrdiff_t(m_p.number_of_tets); ++ti) {
+      const std::size_t t = std::size_t(ti);
       if(m_p.is_constrained(Frame_field_problem::Index(t))) {
         q[t] = m_family[t].basis * x.segment<2>(Eigen::Index(m_offset[t]));
         if(with_offset) q[t] += m_family[t].offset;
@@ -64,7 +68,11 @@ public:
   void apply_laplacian(const std::vector<Vector9>& q, Eigen::VectorXd& y) const
   {
     y.resize(Eigen::Index(number_of_unknowns()));
-    for(std::size_t t = 0; t < m_p.number_of_tets; ++t) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for(std::ptrdiff_t ti = 0; ti < std::ptrdiff_t(m_p.number_of_tets); ++ti) {
+      const std::size_t t = std::size_t(ti);
       Vector9 r = Vector9::Zero();
       for(Frame_field_problem::Index f : m_p.tet_faces[t]) {
         if(f == Frame_field_problem::none) continue;
@@ -133,7 +141,7 @@ public:
         const Eigen::Vector2d ab = m_family[t].basis.transpose() * (q[t] - m_family[t].offset);
         frames[t] = frame_from_family(m_p.direction(ti), ab[0], ab[1]);
       } else {
-        frames[t] = project_to_frame(q[t]);
+        frames[t] = project_to_frame_fast(q[t]);
       }
     }
     return frames;

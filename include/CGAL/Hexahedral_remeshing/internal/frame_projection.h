@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -105,6 +106,37 @@ inline Eigen::Matrix3d project_to_frame(const Vector9& q, const Eigen::Matrix3d*
   for(int s = 0; s < seed_count; ++s) {
     Eigen::Matrix3d R = seeds[s];
     const double dot = refine_frame(qn, R);
+    if(dot > best_dot) {
+      best_dot = dot;
+      best = R;
+    }
+  }
+  return best;
+}
+
+// Faster variant for the initialization of a frame field, where the projection only seeds L-BFGS:
+// the seeds are ranked by their starting dot and only the `refined` best ones are refined, to a
+// looser tolerance. Deterministic (ties keep the earliest seed).
+inline Eigen::Matrix3d project_to_frame_fast(const Vector9& q, int refined = 2, double tolerance = 1e-9)
+{
+  const double norm = q.norm();
+  if(norm < 1e-6)
+    return Eigen::Matrix3d::Identity();
+  const Vector9 qn = q / norm;
+  const double quarter_pi = 0.25 * sh_detail::pi;
+  const Eigen::Matrix3d Rx = Eigen::AngleAxisd(quarter_pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d Ry = Eigen::AngleAxisd(quarter_pi, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d Rz = Eigen::AngleAxisd(quarter_pi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const std::array<Eigen::Matrix3d, 5> seeds = {Eigen::Matrix3d::Identity(), Rx, Ry, Rz, Eigen::Matrix3d(Rz * Rx)};
+  std::array<std::pair<double, int>, 5> ranked;
+  for(int s = 0; s < 5; ++s) ranked[std::size_t(s)] = {-qn.dot(frame_to_sh(seeds[std::size_t(s)])), s};
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const std::pair<double, int>& a, const std::pair<double, int>& b) { return a.first < b.first; });
+  Eigen::Matrix3d best = Eigen::Matrix3d::Identity();
+  double best_dot = -2.;
+  for(int k = 0; k < refined && k < 5; ++k) {
+    Eigen::Matrix3d R = seeds[std::size_t(ranked[std::size_t(k)].second)];
+    const double dot = refine_frame(qn, R, 50, tolerance);
     if(dot > best_dot) {
       best_dot = dot;
       best = R;
