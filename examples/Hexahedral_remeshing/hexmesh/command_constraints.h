@@ -41,6 +41,10 @@ inline int command_constraints(const Arguments& args)
   const HR::Valence_heuristic heuristic = heuristic_option(args);
   const int refinements = args.integer("refinements", 9, 0, 20);
 
+  Output_files outputs; // checked before any computation; all or nothing
+  for(const char* o : {"save-valences", "vtk", "json"})
+    if(args.has(o)) outputs.add(args.value(o));
+
   Mesh mesh;
   read_input_mesh(args, in, mesh);
 
@@ -90,7 +94,10 @@ inline int command_constraints(const Arguments& args)
               << std::setprecision(4) << r.final_energy << " rad): a frame field aligned with the directions will"
               << " not reproduce the prescribed valences there\n";
 
-  if(args.has("save-valences")) HR::IO::write_edge_valences(args.value("save-valences"), mesh, valences);
+  if(args.has("save-valences")) {
+    const std::string f = args.value("save-valences");
+    outputs.write({f}, [&] { HR::IO::write_edge_valences(f, mesh, valences); });
+  }
   if(args.has("vtk")) {
     const std::vector<Eigen::Vector3d> normals = HR::boundary_triangle_unit_normals(mesh);
     std::vector<HR::IO::VTK_array> arrays(4);
@@ -106,7 +113,8 @@ inline int command_constraints(const Arguments& args)
       arrays[2].values.push_back(r.face_energies[i]);
       arrays[3].values.push_back(r.face_energies[i] >= CGAL_PI / 4 ? 1. : 0.);
     }
-    HR::IO::write_VTK_boundary(args.value("vtk"), mesh, arrays);
+    const std::string f = args.value("vtk");
+    outputs.write({f}, [&] { HR::IO::write_VTK_boundary(f, mesh, arrays); });
   }
   if(args.has("json")) {
     Json json;
@@ -138,7 +146,8 @@ inline int command_constraints(const Arguments& args)
         .value("seconds", r.seconds)
         .end();
     json.end();
-    json.write(args.value("json"));
+    const std::string f = args.value("json");
+    outputs.write({f}, [&] { json.write(f); });
   }
   return EXIT_OK;
 }

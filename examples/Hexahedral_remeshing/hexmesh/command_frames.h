@@ -247,8 +247,8 @@ inline int command_frames(const Arguments& args)
               << histogram(r.boundary_valences.histogram) << "; edges below 45 degrees: " << histogram(by_class[0]) << "\n";
     if(r.realigned)
       std::cout << std::scientific << std::setprecision(1) << "  realignment         alignment error "
-                << r.realignment.alignment_error << ", " << r.realignment.changed_matchings << " matchings and "
-                << r.realignment.changed_edges << " edge types changed\n";
+                << r.realignment.alignment_error << ", changed matchings " << r.realignment.changed_matchings
+                << ", changed edge types " << r.realignment.changed_edges << " (0 expected)\n";
     else
       std::cout << "  realignment         not run" << (baseline ? " (the baseline is aligned with the normals)" : "") << "\n";
     std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", valences "
