@@ -186,7 +186,7 @@ TEST(FrameField, SmoothingNeverIncreasesTheEnergy)
   EXPECT_DOUBLE_EQ(r.energy, recorder.energies.back());
   // the reported energy is the energy of the returned frames
   HR::Tetrahedral_mesh_3<> copy = m;
-  auto p = HR::internal::make_frame_field_problem(copy, HR::boundary_triangle_unit_normals(m), HR::internal::Face_weighting::UNIFORM);
+  auto p = HR::internal::make_frame_field_problem(copy, HR::boundary_triangle_unit_normals(m), HR::internal::Face_weighting::AREA_OVER_DISTANCE);
   EXPECT_NEAR(HR::internal::frame_field_energy(p, frames), r.energy, 1e-9 * r.energy);
 }
 

@@ -86,7 +86,7 @@ struct Frame_field_result
 ///   \cgalParamNBegin{face_weights}
 ///     \cgalParamDescription{weights of the interior faces}
 ///     \cgalParamType{`Face_weights`}
-///     \cgalParamDefault{`Face_weights::UNIFORM`}
+///     \cgalParamDefault{`Face_weights::AREA_OVER_DISTANCE`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing}
 ///     \cgalParamDescription{run the L-BFGS smoothing after the relaxation}
@@ -126,7 +126,7 @@ Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::get_parameter_reference;
-  const Face_weights weights = choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::UNIFORM);
+  const Face_weights weights = choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE);
   const bool smooth = choose_parameter(get_parameter(np, internal_np::smoothing), true);
   const int max_iterations = choose_parameter(get_parameter(np, internal_np::maximum_smoothing_iterations), 2000);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-7);

@@ -64,7 +64,7 @@ template <class T> unspecified_type maximum_tetrahedron_volume(const T& value);
 template <class T> unspecified_type radius_edge_ratio(const T& value);
 /// TetGen: keep every surface triangle as a boundary face (`bool`, default `false`).
 template <class T> unspecified_type preserve_surface_triangles(const T& value);
-/// Frame field: weights of the interior faces (`Face_weights`, default `Face_weights::UNIFORM`).
+/// Frame field: weights of the interior faces (`Face_weights`, default `Face_weights::AREA_OVER_DISTANCE`).
 template <class T> unspecified_type face_weights(const T& value);
 /// Frame field: run the L-BFGS smoothing (`bool`, default `true`).
 template <class T> unspecified_type smoothing(const T& value);

@@ -87,8 +87,8 @@ struct Singularity_graph
 {
   /// Per edge: 4 for a regular interior edge, 3 or 5 for a singular one, 0 for an improper one
   /// (any other holonomy: half turn, third turn, or a quarter turn about an axis more than 75.5
-  /// degrees away from the edge),
-  /// -1 for a boundary edge.
+  /// degrees away from the edge that is not the jog of a neighbouring singular curve with the same
+  /// axis), -1 for a boundary edge.
   std::vector<signed char> edge_valence;
   /// Per edge: the holonomy (group element) around an interior edge, -1 on the boundary.
   std::vector<int> edge_holonomy;
@@ -125,6 +125,13 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
   const std::size_t ne = mesh.number_of_edges();
   g.edge_valence.assign(ne, -1);
   g.edge_holonomy.assign(ne, -1);
+  auto direction = [&](Index e) {
+    const auto& ev = mesh.edge_vertices(e);
+    const auto dv = mesh.point(ev[1]) - mesh.point(ev[0]);
+    return Eigen::Vector3d(CGAL::to_double(dv.x()), CGAL::to_double(dv.y()), CGAL::to_double(dv.z())).normalized();
+  };
+  auto world_axis = [&](Index e) -> Eigen::Vector3d { return frames[mesh.edge_ring(e)[0]] * group.axis(g.edge_holonomy[e]); };
+  std::vector<Index> jogs;
   for(Index e = 0; e < ne; ++e) {
     if(mesh.is_boundary_edge(e)) continue;
     const auto ring = mesh.edge_ring(e);
@@ -137,21 +144,39 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
     if(G == internal::Octahedral_group::identity_index) {
       valence = 4;
     } else if(group.rotation_class(G) == internal::Octahedral_rotation_class::QUARTER_TURN) {
-      const auto& ev = mesh.edge_vertices(e);
-      const auto dv = mesh.point(ev[1]) - mesh.point(ev[0]);
-      const Eigen::Vector3d d = Eigen::Vector3d(CGAL::to_double(dv.x()), CGAL::to_double(dv.y()), CGAL::to_double(dv.z())).normalized();
-      const Eigen::Vector3d A = frames[ring[0]] * group.axis(G);
-      const double c = A.dot(d);
+      const double c = world_axis(e).dot(direction(e));
       // a quarter turn about an axis along the edge: valence 4 - phi/(pi/2). Singular curves of a
       // tet mesh zigzag along their true direction, so edges up to ~70 degrees off the holonomy
-      // axis occur on perfectly valid curves (measured on TetGen cylinders); only an axis nearly
-      // perpendicular to the edge (more than ~75.5 degrees, |cos| < 1/4) leaves the sign undecided.
+      // axis occur on perfectly valid curves (measured on TetGen cylinders); an edge nearly
+      // perpendicular to the axis (more than ~75.5 degrees, |cos| < 1/4) is a jog of a curve whose
+      // valence is decided below from its neighbours.
       if(std::abs(c) > 0.25) valence = c > 0 ? 3 : 5;
+      else jogs.push_back(e);
     }
     g.edge_valence[e] = valence;
-    if(valence == 3) ++g.valence3_edges;
-    else if(valence == 5) ++g.valence5_edges;
-    else if(valence == 0) ++g.improper_edges;
+  }
+  // A jog inherits the valence of a classified singular edge that shares one of its vertices and
+  // whose holonomy axis is parallel to its own (the same curve); jogs with no such neighbour stay
+  // improper.
+  for(bool changed = true; changed;) {
+    changed = false;
+    for(Index e : jogs) {
+      if(g.edge_valence[e] != 0) continue;
+      const Eigen::Vector3d A = world_axis(e);
+      for(Index v : mesh.edge_vertices(e))
+        for(Index n : mesh.vertex_edges(v)) {
+          if(n == e || (g.edge_valence[n] != 3 && g.edge_valence[n] != 5)) continue;
+          if(std::abs(world_axis(n).dot(A)) < std::sqrt(0.5)) continue;
+          g.edge_valence[e] = g.edge_valence[n];
+          changed = true;
+          break;
+        }
+    }
+  }
+  for(Index e = 0; e < ne; ++e) {
+    if(g.edge_valence[e] == 3) ++g.valence3_edges;
+    else if(g.edge_valence[e] == 5) ++g.valence5_edges;
+    else if(g.edge_valence[e] == 0) ++g.improper_edges;
   }
 
   // Singular curves: maximal chains of singular edges of one valence through vertices of

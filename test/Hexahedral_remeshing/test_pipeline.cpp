@@ -1,0 +1,222 @@
+// Tests of the whole frame-field pipeline (valences -> constraints -> frame field -> matchings ->
+// realignment): the prism and acute-edge oracles, every shared model, realignment invariants,
+// determinism across thread counts, and the Surface_mesh entry.
+#include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
+#include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace HR = CGAL::Hexahedral_remeshing;
+typedef HR::Tetrahedral_mesh_3<> Mesh;
+typedef Mesh::Index Index;
+typedef Mesh::Point_3 Point;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
+const std::string shared_data = HEXREM_SHARED_DATA_DIR;
+
+Mesh load(const std::string& file, double max_volume = 0)
+{
+  Mesh m;
+  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::split_boundary_chords(true,
+                                           HR::parameters::maximum_tetrahedron_volume(max_volume)));
+  return m;
+}
+
+// A right triangular prism whose cross-section has angles 90 (at A), 30 (at B) and 60 degrees,
+// extruded along z over [0, 1], tetrahedralized with TetGen.
+Mesh prism_30_60_90()
+{
+  const double c = 1.0 / std::sqrt(3.0);
+  const std::string off = (fs::temp_directory_path() / "hexrem_prism_30_60_90.off").string();
+  {
+    std::ofstream out(off);
+    out.precision(17);
+    out << "OFF\n6 8 0\n0 0 0\n1 0 0\n0 " << c << " 0\n0 0 1\n1 0 1\n0 " << c << " 1\n"
+        << "3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n";
+  }
+  Mesh m = load(off, 0.0005);
+  std::remove(off.c_str());
+  return m;
+}
+
+bool vertical(const Mesh& m, Index e)
+{
+  const auto& ev = m.edge_vertices(e);
+  return m.point(ev[0]).x() == m.point(ev[1]).x() && m.point(ev[0]).y() == m.point(ev[1]).y();
+}
+
+std::vector<std::string> shared_models()
+{
+  std::vector<std::string> files;
+  for(const char* sub : {"hexme", "mambo"}) {
+    const fs::path dir = fs::path(shared_data) / sub;
+    if(!fs::exists(dir)) continue;
+    for(const auto& entry : fs::directory_iterator(dir))
+      if(entry.path().extension() == ".vtk") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+void check_realignment(const Mesh& m, const HR::Frame_field_pipeline_result& r)
+{
+  ASSERT_TRUE(r.realigned);
+  EXPECT_LT(r.realignment.alignment_error, 1e-9);
+  EXPECT_LT(r.realignment.constraint_error, 1e-9);
+  // every constrained tet has an axis exactly on its face normal
+  const auto normals = HR::boundary_triangle_unit_normals(m);
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b) {
+    const Eigen::Vector3d c = r.frames[m.boundary_triangle_tetrahedron(b)].transpose() * normals[b];
+    ASSERT_NEAR(c.cwiseAbs().maxCoeff(), 1.0, 1e-9);
+  }
+  for(const Eigen::Matrix3d& E : r.frames) ASSERT_NEAR(E.determinant(), 1.0, 1e-9);
+}
+
+} // namespace
+
+TEST(Pipeline, PrismBaselineBreaksTheThirtyDegreeEdge)
+{
+  const Mesh m = prism_30_60_90();
+  const auto r = HR::compute_frame_field_pipeline(m, HR::parameters::baseline(true));
+  std::size_t thirty = 0;
+  for(Index e : m.boundary_edges())
+    if(vertical(m, e) && HR::boundary_edge_dihedral_class(m, e) == 0) {
+      ++thirty;
+      EXPECT_EQ(r.boundary_valences.achieved[e], 0);
+    }
+  EXPECT_GT(thirty, 0u);
+  EXPECT_EQ(r.singularities.valence3_edges + r.singularities.valence5_edges, 0u);
+}
+
+TEST(Pipeline, PrismWithConstraintsGetsValenceOneAndOneInteriorCurve)
+{
+  const Mesh m = prism_30_60_90();
+  const auto r = HR::compute_frame_field_pipeline(m);
+  EXPECT_LT(r.constraints.final_energy, CGAL_PI / 4);
+  EXPECT_EQ(r.boundary_valences.mismatched, 0u);
+  for(Index e : m.boundary_edges())
+    if(vertical(m, e) && HR::boundary_edge_dihedral_class(m, e) != 2) EXPECT_EQ(r.boundary_valences.achieved[e], 1);
+  EXPECT_EQ(r.singularities.valence5_edges, 0u);
+  EXPECT_EQ(r.singularities.improper_edges, 0u);
+  ASSERT_EQ(r.singularities.number_of_curves(3), 1u);
+  const HR::Singular_curve& c = r.singularities.curves.front();
+  const double z0 = m.point(c.vertices.front()).z(), z1 = m.point(c.vertices.back()).z();
+  EXPECT_EQ(std::min(z0, z1), 0.0); // from cap to cap
+  EXPECT_EQ(std::max(z0, z1), 1.0);
+  check_realignment(m, r);
+  EXPECT_EQ(r.realignment.changed_edges, 0u);
+}
+
+TEST(Pipeline, AcuteEdgeGetsValenceOne)
+{
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  const auto baseline = HR::compute_frame_field_pipeline(m, HR::parameters::baseline(true));
+  const auto ours = HR::compute_frame_field_pipeline(m);
+  EXPECT_GT(ours.constraints.initial_energy, CGAL_PI / 4);
+  EXPECT_LT(ours.constraints.final_energy, CGAL_PI / 4);
+  std::size_t acute = 0;
+  for(Index e : m.boundary_edges())
+    if(HR::boundary_edge_dihedral_class(m, e) == 0) {
+      ++acute;
+      EXPECT_EQ(baseline.boundary_valences.achieved[e], 0);
+      EXPECT_EQ(ours.boundary_valences.achieved[e], 1);
+    }
+  EXPECT_GE(acute, 8u);
+  EXPECT_EQ(ours.boundary_valences.mismatched, 0u);
+  check_realignment(m, ours);
+}
+
+TEST(Pipeline, SurfaceMeshInput)
+{
+  CGAL::Surface_mesh<Point> cube;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(example_data + "/cube.off", cube));
+  HR::Tetrahedral_soup_3<Point> soup;
+  HR::tetrahedralize_surface(cube, soup, HR::parameters::maximum_tetrahedron_volume(0.002));
+  Mesh m;
+  HR::build_tetrahedral_mesh(soup, m);
+  const auto r = HR::compute_frame_field_pipeline(m);
+  EXPECT_LT(r.frame_field.energy, 1e-10);
+  EXPECT_EQ(r.singularities.valence3_edges + r.singularities.valence5_edges + r.singularities.improper_edges, 0u);
+  EXPECT_EQ(r.boundary_valences.mismatched, 0u);
+  check_realignment(m, r);
+  EXPECT_EQ(r.realignment.changed_matchings, 0u);
+}
+
+TEST(Pipeline, DeterministicWhateverTheThreadCount)
+{
+#ifdef _OPENMP
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto one = HR::compute_frame_field_pipeline(m);
+  omp_set_num_threads(2);
+  const auto two = HR::compute_frame_field_pipeline(m);
+  omp_set_num_threads(saved);
+  ASSERT_EQ(one.frames.size(), two.frames.size());
+  for(std::size_t t = 0; t < one.frames.size(); ++t) ASSERT_TRUE(one.frames[t] == two.frames[t]) << "tet " << t;
+  EXPECT_EQ(one.directions, two.directions);
+  EXPECT_EQ(one.frame_field.energy, two.frame_field.energy);
+#else
+  GTEST_SKIP() << "built without OpenMP";
+#endif
+}
+
+// Every shared model with the default (low_angle) heuristic. Known deviations, measured on this
+// build (models built with split_boundary_chords): the test fails if a model gets worse or if a
+// model that is not listed deviates.
+TEST(Pipeline, EverySharedModel)
+{
+  const auto files = shared_models();
+  if(files.empty()) GTEST_SKIP() << "../shared/data not present";
+  // boundary edges whose achieved valence differs from the prescribed one although E(v) < pi/4
+  const std::map<std::string, std::size_t> known_valence_mismatches = {
+    {"i01c_m1", 37}, {"n01c_cross_cyls_sr", 1}, {"n04c_transition_prism", 3}, {"n06c_anti_pentapyr", 1},
+    {"n10c_qtorus_cyl", 2}, {"s08c_cross_cyls_dr", 2}, {"B1_tet", 1}};
+  // interior faces whose matching, recomputed on the realigned field, differs from the kept one
+  // (the realigned field turns by more than 45 degrees between two tets of a thin feature wedge)
+  const std::map<std::string, std::size_t> known_changed_matchings = {
+    {"i01c_m1", 1}, {"n04c_transition_prism", 20}, {"n05c_box_min_pcyls", 4}, {"n10c_qtorus_cyl", 9},
+    {"n13c_acute_line", 8}, {"s08c_cross_cyls_dr", 1}, {"s12c_cube_rounded_1", 39}, {"s13c_cube_rounded_2", 11},
+    {"B1_tet", 1}, {"B41", 24}};
+  // interior edges whose type changes when evaluated on the realigned frames (the matchings are
+  // kept, so only the 3/5 sign of edges nearly perpendicular to their holonomy axis can change)
+  const std::map<std::string, std::size_t> known_changed_edges = {
+    {"i01c_m1", 3}, {"n01c_cross_cyls_sr", 2}, {"n05c_box_min_pcyls", 2}, {"n10c_qtorus_cyl", 1},
+    {"s12c_cube_rounded_1", 5}, {"s13c_cube_rounded_2", 1}};
+  auto allowed = [](const std::map<std::string, std::size_t>& known, const std::string& name) {
+    return known.count(name) ? known.at(name) : std::size_t(0);
+  };
+  for(const std::string& f : files) {
+    SCOPED_TRACE(f);
+    const std::string name = fs::path(f).stem().string();
+    const Mesh m = load(f);
+    const auto r = HR::compute_frame_field_pipeline(m);
+    EXPECT_LT(r.constraints.final_energy, CGAL_PI / 4);
+    EXPECT_LE(r.boundary_valences.mismatched, allowed(known_valence_mismatches, name)) << name;
+    EXPECT_EQ(r.boundary_valences.total, m.boundary_edges().size());
+    check_realignment(m, r);
+    EXPECT_LE(r.realignment.changed_matchings, allowed(known_changed_matchings, name)) << name;
+    EXPECT_LE(r.realignment.changed_edges, allowed(known_changed_edges, name)) << name;
+    std::printf("%-28s tets %6zu  E(n) %.3f  E(v) %.3f  v3 %zu/%zu curves  v5 %zu/%zu  improper %zu  "
+                "boundary %zu/%zu  changed matchings %zu edges %zu  %.2f s\n",
+                name.c_str(), m.number_of_tetrahedra(), r.constraints.initial_energy, r.constraints.final_energy,
+                r.singularities.valence3_edges, r.singularities.number_of_curves(3), r.singularities.valence5_edges,
+                r.singularities.number_of_curves(5), r.singularities.improper_edges, r.boundary_valences.matched,
+                r.boundary_valences.total, r.realignment.changed_matchings, r.realignment.changed_edges, r.seconds);
+  }
+}
