@@ -163,7 +163,9 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
 
   if(realign) {
     visitor.start_stage("realignment");
-    r.realignment = realign_frame_field(mesh, r.frames, r.matchings, r.directions);
+    r.realignment = realign_frame_field(mesh, r.frames, r.matchings, r.directions,
+                                        parameters::face_weights(choose_parameter(get_parameter(np, internal_np::face_weights),
+                                                                                  Face_weights::AREA_OVER_DISTANCE)));
     r.realigned = true;
     visitor.end_stage("realignment", r.realignment.seconds);
   }

@@ -9,6 +9,8 @@
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/frame_field.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
 
 #include <Eigen/Dense>
@@ -85,6 +87,11 @@ inline Eigen::Matrix<double, 3, 2> tangent_basis(const Eigen::Vector3d& n)
 /// \param directions the directions `v_i` the input field is aligned with, per boundary triangle
 /// \param np an optional sequence of named parameters among:
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{face_weights}
+///     \cgalParamDescription{weights of the interior faces, as in `compute_frame_field()`}
+///     \cgalParamType{`Face_weights`}
+///     \cgalParamDefault{`Face_weights::AREA_OVER_DISTANCE`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{relaxation_tolerance}
 ///     \cgalParamDescription{relative residual at which the conjugate gradients stop}
 ///     \cgalParamType{`double`}
@@ -102,6 +109,8 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const double tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-5);
+  const bool uniform = choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE) ==
+                       Face_weights::UNIFORM;
   const auto start = std::chrono::steady_clock::now();
   const std::size_t nt = mesh.number_of_tetrahedra();
   if(frames.size() != nt || directions.size() != mesh.number_of_boundary_triangles() ||
@@ -146,19 +155,23 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   std::vector<Face> faces;
   std::vector<std::array<Index, 4> > tet_faces(nt, {Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index,
                                                     Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index});
+  std::vector<double> weights;
   for(Index f = 0; f < mesh.number_of_faces(); ++f) {
     const auto& ft = mesh.face_tetrahedra(f);
     if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) continue;
     const Eigen::Matrix3d& g = group.matrix(matchings.face_matching[f]);
     faces.push_back({ft[0], ft[1], Signed_permutation(g), Signed_permutation(g.transpose()), 1.0});
+    weights.push_back(uniform ? 1.0 : internal::area_over_distance(mesh, f));
   }
+  internal::normalize_mean(weights);
+  for(std::size_t fi = 0; fi < faces.size(); ++fi) faces[fi].w = weights[fi];
   for(Index fi = 0; fi < faces.size(); ++fi)
     for(Index t : {faces[fi].a, faces[fi].b})
       for(int k = 0; k < 4; ++k)
         if(tet_faces[t][k] == Tetrahedral_mesh_3<Traits>::null_index) { tet_faces[t][k] = fi; break; }
   std::vector<double> degree(nt, 0.);
   for(const Face& f : faces) { degree[f.a] += f.w; degree[f.b] += f.w; }
-  // only there to make the system definite (the face weights are 1)
+  // only there to make the system definite (the face weights have mean 1)
   const double mu = 1e-6;
 
   // Unknowns: 9 per free tet (E' itself), 6 per constrained tet (Y_t, E' = X0 + T Y_t).

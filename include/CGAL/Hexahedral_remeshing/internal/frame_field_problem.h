@@ -39,6 +39,32 @@ struct Frame_field_problem
 
 enum class Face_weighting { UNIFORM, AREA_OVER_DISTANCE };
 
+// Weight of interior face f: its area over the distance of the centroids of its two tets, the
+// discretization of the Dirichlet energy that does not depend on the local mesh size.
+template <class Traits>
+double area_over_distance(const Tetrahedral_mesh_3<Traits>& mesh, typename Tetrahedral_mesh_3<Traits>::Index f)
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  const auto& v = mesh.face_vertices(f);
+  const auto& ft = mesh.face_tetrahedra(f);
+  const double area = std::sqrt(CGAL::to_double(CGAL::squared_area(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]))));
+  auto centroid = [&](Index t) {
+    const auto& tv = mesh.tetrahedron_vertices(t);
+    return CGAL::centroid(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3]));
+  };
+  return area / std::sqrt(CGAL::to_double(CGAL::squared_distance(centroid(ft[0]), centroid(ft[1]))));
+}
+
+// Scales the weights to mean 1, so that energies are comparable between weightings.
+inline void normalize_mean(std::vector<double>& weights)
+{
+  if(weights.empty()) return;
+  double sum = 0;
+  for(double w : weights) sum += w;
+  const double scale = double(weights.size()) / sum;
+  for(double& w : weights) w *= scale;
+}
+
 template <class Traits>
 Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& mesh,
                                              const std::vector<Eigen::Vector3d>& boundary_directions,
@@ -73,26 +99,9 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     }
     interior_index[f] = Index(p.face_tets.size());
     p.face_tets.push_back({ft[0], ft[1]});
-    double w = 1.0;
-    if(weighting == Face_weighting::AREA_OVER_DISTANCE) {
-      const auto& v = mesh.face_vertices(f);
-      const double area = std::sqrt(CGAL::to_double(CGAL::squared_area(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]))));
-      auto centroid = [&](Index t) {
-        const auto& tv = mesh.tetrahedron_vertices(t);
-        return CGAL::centroid(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3]));
-      };
-      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(centroid(ft[0]), centroid(ft[1]))));
-      w = area / d;
-    }
-    p.face_weight.push_back(w);
+    p.face_weight.push_back(weighting == Face_weighting::AREA_OVER_DISTANCE ? area_over_distance(mesh, f) : 1.0);
   }
-  if(weighting == Face_weighting::AREA_OVER_DISTANCE && !p.face_weight.empty()) {
-    // normalize so that the mean weight is 1: energies are then comparable between weightings
-    double sum = 0;
-    for(double w : p.face_weight) sum += w;
-    const double scale = double(p.face_weight.size()) / sum;
-    for(double& w : p.face_weight) w *= scale;
-  }
+  if(weighting == Face_weighting::AREA_OVER_DISTANCE) normalize_mean(p.face_weight);
   for(Index t = 0; t < nt; ++t)
     for(int i = 0; i < 4; ++i) p.tet_faces[t][i] = interior_index[mesh.tetrahedron_face(t, i)];
   return p;
