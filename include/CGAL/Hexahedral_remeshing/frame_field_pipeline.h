@@ -43,7 +43,7 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(realignment)
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of the pipeline: the hooks of `Frame_field_visitor`, called for every stage of
 /// the pipeline (`"valences"`, `"constraints"`, `"setup"`, `"initialization"`, `"smoothing"`,
-/// `"matchings"`, `"realignment"`), plus a hook called once the whole result is available.
+/// `"matchings"`, `"realignment"`), in this order (`"smoothing"` and `"realignment"` only when they run).
 struct Frame_field_pipeline_visitor : Frame_field_visitor
 {
 };
@@ -76,9 +76,19 @@ struct Frame_field_pipeline_result
   Boundary_valences boundary_valences;
   /// Report of the realignment (if any).
   Realignment_result realignment;
-  /// Seconds of each stage.
+  /// Seconds of the valence stage.
   double valences_seconds = 0, constraints_seconds = 0, matchings_seconds = 0, seconds = 0;
 };
+
+/// \var Frame_field_pipeline_result::constraints_seconds
+/// Seconds of the direction constraint stage (the frame-field stages are timed in `frame_field`,
+/// the realignment in `realignment`).
+
+/// \var Frame_field_pipeline_result::matchings_seconds
+/// Seconds of the matchings, the singularity graph and the achieved boundary valences.
+
+/// \var Frame_field_pipeline_result::seconds
+/// Seconds of the whole pipeline.
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// The frame-field half of the hexahedral remeshing pipeline of Desobry et al.: boundary edge

@@ -264,7 +264,14 @@ struct Boundary_valences
 /// `v` for the field of step 2, the normals after realignment). Eq. (3) gives the valence modulo 4;
 /// the representative is the one closest to `2 phi(d_i, d_j) / pi`.
 ///
+/// \param mesh the mesh the frames live on
+/// \param frames one frame per tetrahedron
+/// \param matchings the matchings of `frames` (`compute_matchings()`)
+/// \param directions the directions the boundary frames are aligned with, one per boundary triangle
 /// \param prescribed per edge, the prescribed valence (boundary edges), or empty to only measure
+/// \returns the achieved valence of every boundary edge and, if `prescribed` is given, the counts of
+///          matched and mismatched edges
+/// \throws Error if `directions` does not have one entry per boundary triangle.
 template <class Traits>
 Boundary_valences compute_achieved_boundary_valences(const Tetrahedral_mesh_3<Traits>& mesh,
                                                      const std::vector<Eigen::Matrix3d>& frames,
