@@ -276,8 +276,9 @@ inline int command_frames(const Arguments& args)
               << " boundary edges do not get the prescribed valence (E(v) = " << std::setprecision(4)
               << r.constraints.final_energy << " rad)\n" << std::defaultfloat;
   if(r.realigned && (r.realignment.changed_matchings > 0 || r.realignment.changed_edges > 0))
-    std::cerr << "hexmesh: warning: the realignment changed " << r.realignment.changed_matchings << " matchings and "
-              << r.realignment.changed_edges << " edge types (the singularity graph was not kept exactly)\n";
+    std::cerr << "hexmesh: warning: after the realignment, " << r.realignment.changed_matchings
+              << " face matchings recomputed from the frames differ from the kept ones and " << r.realignment.changed_edges
+              << " interior edges changed type (the exports keep the matchings of the field before realignment)\n";
   return EXIT_OK;
 }
 
