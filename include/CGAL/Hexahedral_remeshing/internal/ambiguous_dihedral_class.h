@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/dihedral_class.h>
 
 #include <CGAL/Exact_rational.h>
+#include <boost/multiprecision/gmp.hpp>
 #ifdef CGAL_USE_GMP
 #include <CGAL/Gmpq.h>
 #endif
@@ -83,6 +84,10 @@ inline mpq_srcptr mpq_of(const ::mpq_class& q) { return q.get_mpq_t(); }
 #ifdef CGAL_USE_GMP
 inline mpq_srcptr mpq_of(const Gmpq& q) { return q.mpq(); }
 #endif
+// CGAL::Exact_rational is Boost.Multiprecision's GMP rational when gmpxx is not configured
+// (e.g. a build without CGAL's CMake): its backend holds an mpq_t too.
+template <class Backend, boost::multiprecision::expression_template_option ET>
+mpq_srcptr mpq_of(const boost::multiprecision::number<Backend, ET>& q) { return q.backend().data(); }
 
 // Exact comparison of the rational a / b (b > 0) with T: true if a / b >= T (never equal).
 template <class Rational>
