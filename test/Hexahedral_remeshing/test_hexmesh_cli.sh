@@ -3,6 +3,7 @@
 #   test_hexmesh_cli.sh HEXMESH REPO_ROOT
 set -u
 hexmesh="$1"; root="$2"
+export OMP_WAIT_POLICY=PASSIVE # ctest runs two tests at once on two cores: OpenMP threads must not spin
 data="$root/examples/Hexahedral_remeshing/data"
 broken="$root/test/Hexahedral_remeshing/data/broken"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT

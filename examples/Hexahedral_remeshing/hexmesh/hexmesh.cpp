@@ -47,6 +47,8 @@ const char* usage =
   "                            --no-chord-split: keep interior edges joining two boundary vertices\n"
   "                            (split by default: acute features need it); --threads N: OpenMP\n"
   "                            threads; --quiet: no summary nor progress (warnings remain).\n"
+  "                            On a busy machine, OMP_WAIT_POLICY=PASSIVE (environment) avoids\n"
+  "                            OpenMP threads spinning while they wait.\n"
   "\n"
   "Inputs: .vtk (VTK legacy ASCII unstructured grid, gmsh style), .mesh (MEDIT),\n"
   "        .off .obj .stl .ply (closed surfaces, tetrahedralized with TetGen).\n"
