@@ -524,6 +524,24 @@ TEST(DihedralClass, HistogramOfAcuteModelAndB41)
   const auto s = HR::compute_mesh_statistics(n13);
   EXPECT_EQ(s.dihedral_class_histogram, (std::array<std::size_t, 5>{{8, 52, 615, 0, 0}}));
   EXPECT_NEAR(s.min_dihedral_angle_degrees, 10.0, 1e-6);
+
+  // B41 has 45 degree edges (the rounding tie): in exact arithmetic on its double coordinates,
+  // 18 of them are slightly below 45 degrees (class 0), the others at or above (class 1).
+  const std::string b41 = shared_data + "/mambo/B41.vtk";
+  if(!fs::exists(b41)) GTEST_SKIP() << "../shared/data not present";
+  const Mesh m = load(b41);
+  const auto sb = HR::compute_mesh_statistics(m);
+  EXPECT_EQ(sb.dihedral_class_histogram, (std::array<std::size_t, 5>{{18, 518, 8344, 234, 0}}));
+  std::size_t ties = 0;
+  for(Index e : m.boundary_edges()) {
+    const double phi = HR::boundary_edge_dihedral_angle(m, e);
+    if(HR::boundary_edge_dihedral_class(m, e) == 0) {
+      EXPECT_NEAR(phi, CGAL_PI / 4, 1e-9); // a tie that floating point cannot decide
+      ++ties;
+    }
+    if(std::abs(phi - CGAL_PI / 4) < 1e-9 && HR::boundary_edge_dihedral_class(m, e) == 1) ++ties;
+  }
+  EXPECT_GT(ties, 18u); // both sides of the tie occur
 }
 
 // ---------------------------------------------------------------------------------------------
