@@ -293,7 +293,10 @@ private:
       for(Index t : vertex_tets[a])
         if(std::find(mesh.m_tets[t].begin(), mesh.m_tets[t].end(), b) != mesh.m_tets[t].end()) ring.push_back(t);
       const Index m = Index(mesh.m_points.size());
-      mesh.m_points.push_back(CGAL::midpoint(mesh.m_points[a], mesh.m_points[b]));
+      // a/2 + b/2 rather than (a + b)/2: no overflow near the largest doubles
+      const Point_3& pa = mesh.m_points[a];
+      const Point_3& pb = mesh.m_points[b];
+      mesh.m_points.push_back(Point_3(pa.x() / 2 + pb.x() / 2, pa.y() / 2 + pb.y() / 2, pa.z() / 2 + pb.z() / 2));
       // all children must be positively oriented, else the chord is left alone
       bool ok = true;
       std::vector<std::pair<std::array<Index, 4>, std::array<Index, 4> > > children;
