@@ -19,16 +19,13 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_timing.h"
+
 namespace HR = CGAL::Hexahedral_remeshing;
 typedef HR::Tetrahedral_mesh_3<> Mesh;
 
 namespace {
 
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 double peak_mib()
 {

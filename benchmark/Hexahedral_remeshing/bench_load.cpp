@@ -12,19 +12,9 @@
 #include <string>
 #include <vector>
 
-namespace HR = CGAL::Hexahedral_remeshing;
+#include "benchmark_timing.h"
 
-namespace {
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-} // namespace
+namespace HR = CGAL::Hexahedral_remeshing;
 
 int main(int argc, char** argv)
 {

@@ -16,6 +16,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
+
+#include "shared_models.h"
 #include <mpfr.h>
 
 #include <algorithm>
@@ -46,18 +48,6 @@ const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
 const std::string shared_data = HEXREM_SHARED_DATA_DIR;
 const double quarter_pi = CGAL_PI / 4;
 
-std::vector<std::string> shared_models()
-{
-  std::vector<std::string> files;
-  for(const char* sub : {"hexme", "mambo"}) {
-    const fs::path dir = fs::path(shared_data) / sub;
-    if(!fs::exists(dir)) continue;
-    for(const auto& entry : fs::directory_iterator(dir))
-      if(entry.path().extension() == ".vtk") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 Mesh load(const std::string& f)
 {

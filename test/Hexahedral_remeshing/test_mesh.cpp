@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "shared_models.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -28,18 +30,6 @@ const std::string test_data = HEXREM_TEST_DATA_DIR;
 const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
 const std::string shared_data = HEXREM_SHARED_DATA_DIR;
 
-std::vector<std::string> shared_models()
-{
-  std::vector<std::string> files;
-  for(const char* sub : {"hexme", "mambo"}) {
-    const fs::path dir = fs::path(shared_data) / sub;
-    if(!fs::exists(dir)) continue;
-    for(const auto& entry : fs::directory_iterator(dir))
-      if(entry.path().extension() == ".vtk") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // Independent count of the points and of the type-10 cells of a VTK file (oracle for the reader).
 std::pair<std::size_t, std::size_t> count_vtk(const std::string& filename)

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "shared_models.h"
+
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -27,7 +29,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
-const std::string shared_data = HEXREM_SHARED_DATA_DIR;
 
 Mesh load(const std::string& file, double max_volume = 0)
 {
@@ -60,18 +61,6 @@ bool vertical(const Mesh& m, Index e)
   return m.point(ev[0]).x() == m.point(ev[1]).x() && m.point(ev[0]).y() == m.point(ev[1]).y();
 }
 
-std::vector<std::string> shared_models()
-{
-  std::vector<std::string> files;
-  for(const char* sub : {"hexme", "mambo"}) {
-    const fs::path dir = fs::path(shared_data) / sub;
-    if(!fs::exists(dir)) continue;
-    for(const auto& entry : fs::directory_iterator(dir))
-      if(entry.path().extension() == ".vtk") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 void check_realignment(const Mesh& m, const HR::Frame_field_pipeline_result& r)
 {
