@@ -117,19 +117,8 @@ bool ratio_at_least_ambiguous_threshold(const Rational& a, const Rational& b)
 template <class FT>
 void ambiguous_rotated_squares(const std::array<double, 12>& xyz, int m, FT& y2, FT& x2, Sign& sign_y)
 {
-  const FT px(xyz[0]), py(xyz[1]), pz(xyz[2]);
-  const FT qx(xyz[3]), qy(xyz[4]), qz(xyz[5]);
-  const FT ax(xyz[6]), ay(xyz[7]), az(xyz[8]);
-  const FT bx(xyz[9]), by(xyz[10]), bz(xyz[11]);
-  const FT ex = qx - px, ey = qy - py, ez = qz - pz;
-  const FT apx = ax - px, apy = ay - py, apz = az - pz;
-  const FT bqx = bx - qx, bqy = by - qy, bqz = bz - qz;
-  const FT nix = ey * apz - ez * apy, niy = ez * apx - ex * apz, niz = ex * apy - ey * apx;
-  const FT njx = -ey * bqz + ez * bqy, njy = -ez * bqx + ex * bqz, njz = -ex * bqy + ey * bqx;
-  const FT cx = niy * njz - niz * njy, cy = niz * njx - nix * njz, cz = nix * njy - niy * njx;
-  const FT s = cx * ex + cy * ey + cz * ez;
-  const FT c = nix * njx + niy * njy + niz * njz;
-  const FT e2 = ex * ex + ey * ey + ez * ez;
+  FT s, c, e2;
+  dihedral_polynomials(xyz, s, c, e2);
   // (X0, Y0) = (-c|e|, s); rotation by -m pi/2: m = 0, 4: (X0, Y0); 1: (Y0, -X0); 2: (-X0, -Y0); 3: (-Y0, X0)
   const bool y_is_s = (m % 2 == 0);
   const Sign sign_base = CGAL::sign(y_is_s ? s : c); // throws Uncertain_conversion_exception with intervals

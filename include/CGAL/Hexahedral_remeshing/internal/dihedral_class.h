@@ -15,14 +15,10 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// The dihedral angle of the paper (Desobry et al., Sec. 4.1) at a boundary edge is
-//   phi = pi - atan2(<n_i x n_j, e/|e|>, <n_i, n_j>)
-// with e the half-edge of triangle i.  With s = <n_i x n_j, e> and c = <n_i, n_j> (polynomials of
-// the input coordinates), beta = atan2(s/|e|, c) and the class round(2 phi / pi) only depends on
-// sign(s), sign(c) and sign(c^2 |e|^2 - s^2): no trigonometry, hence an exact predicate once the
-// polynomials are evaluated exactly.  Ties at (2m+1) pi/4 round up (towards the larger valence).
+// s = <n_i x n_j, e>, c = <n_i, n_j> and |e|^2 for the edge p -> q of the triangles (p, q, a) and
+// (q, p, b) given by the 12 coordinates, evaluated in the number type FT (intervals or exact).
 template <class FT>
-int dihedral_class_from_coordinates(const std::array<double, 12>& xyz)
+void dihedral_polynomials(const std::array<double, 12>& xyz, FT& s, FT& c, FT& e2)
 {
   const FT px(xyz[0]), py(xyz[1]), pz(xyz[2]);
   const FT qx(xyz[3]), qy(xyz[4]), qz(xyz[5]);
@@ -35,9 +31,22 @@ int dihedral_class_from_coordinates(const std::array<double, 12>& xyz)
   const FT nix = ey * apz - ez * apy, niy = ez * apx - ex * apz, niz = ex * apy - ey * apx;
   const FT njx = -ey * bqz + ez * bqy, njy = -ez * bqx + ex * bqz, njz = -ex * bqy + ey * bqx;
   const FT cx = niy * njz - niz * njy, cy = niz * njx - nix * njz, cz = nix * njy - niy * njx;
-  const FT s = cx * ex + cy * ey + cz * ez;
-  const FT c = nix * njx + niy * njy + niz * njz;
-  const FT e2 = ex * ex + ey * ey + ez * ez;
+  s = cx * ex + cy * ey + cz * ez;
+  c = nix * njx + niy * njy + niz * njz;
+  e2 = ex * ex + ey * ey + ez * ez;
+}
+
+// The dihedral angle of the paper (Desobry et al., Sec. 4.1) at a boundary edge is
+//   phi = pi - atan2(<n_i x n_j, e/|e|>, <n_i, n_j>)
+// with e the half-edge of triangle i.  With s = <n_i x n_j, e> and c = <n_i, n_j> (polynomials of
+// the input coordinates), beta = atan2(s/|e|, c) and the class round(2 phi / pi) only depends on
+// sign(s), sign(c) and sign(c^2 |e|^2 - s^2): no trigonometry, hence an exact predicate once the
+// polynomials are evaluated exactly.  Ties at (2m+1) pi/4 round up (towards the larger valence).
+template <class FT>
+int dihedral_class_from_coordinates(const std::array<double, 12>& xyz)
+{
+  FT s, c, e2;
+  dihedral_polynomials(xyz, s, c, e2);
 
   const Sign sign_s = CGAL::sign(s);
   const Sign sign_c = CGAL::sign(c);
