@@ -3,6 +3,7 @@
 // Author(s) : Hexahedral_remeshing developers
 #include "hex_mesh_generators.h"
 
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -110,4 +111,201 @@ TEST(HexMeshGenerators, MapFromHexMesh)
       if(inner_quads > 0)
         EXPECT_GT(non_identity, 0u);
     }
+}
+
+// The checker on the generated meshes: valid, and the counts and irregular edges counted by hand.
+TEST(CheckHexahedralMesh, GeneratedMeshesMatchTheirOracles)
+{
+  for(const auto& g : T::all_generated_hex_meshes()) {
+    SCOPED_TRACE(g.name);
+    const HR::Hexahedral_mesh_check c = HR::check_hexahedral_mesh(g.mesh);
+    EXPECT_TRUE(c.valid);
+    EXPECT_TRUE(c.conforming);
+    EXPECT_TRUE(c.manifold_boundary);
+    EXPECT_EQ(c.hexahedra, g.expected.hexahedra);
+    EXPECT_EQ(c.vertices, g.expected.vertices);
+    EXPECT_EQ(c.unused_vertices, 0u);
+    EXPECT_EQ(c.boundary_quads, g.expected.boundary_quads);
+    EXPECT_EQ(c.interior_quads, (6 * g.expected.hexahedra - g.expected.boundary_quads) / 2);
+    EXPECT_EQ(c.boundary_euler_characteristic, g.expected.boundary_euler_characteristic);
+    EXPECT_EQ(c.boundary_components, 1u);
+    EXPECT_EQ(c.duplicate_vertices, 0u);
+    EXPECT_EQ(c.duplicate_hexahedra, 0u);
+    EXPECT_EQ(c.inverted_hexahedra, 0u);
+    EXPECT_GT(c.min_scaled_jacobian, 0.2);
+    EXPECT_EQ(c.irregular_interior_edges, g.expected.interior_irregular_edges);
+    EXPECT_EQ(c.irregular_boundary_edges, g.expected.boundary_irregular_edges);
+    // a closed surface of quads: 2 E = 4 F
+    EXPECT_EQ(2 * c.boundary_edges, 4 * c.boundary_quads);
+  }
+}
+
+TEST(CheckHexahedralMesh, GridCountsAndVolumes)
+{
+  const int a = 2, b = 3, cc = 4;
+  const auto g = T::make_grid(a, b, cc, 0.5);
+  const auto c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_EQ(c.interior_edges, std::size_t(a * (b - 1) * (cc - 1) + (a - 1) * b * (cc - 1) + (a - 1) * (b - 1) * cc));
+  EXPECT_EQ(c.interior_edge_valences.size(), 1u);
+  EXPECT_EQ(c.boundary_vertices, std::size_t((a + 1) * (b + 1) * (cc + 1) - (a - 1) * (b - 1) * (cc - 1)));
+  EXPECT_NEAR(c.min_scaled_jacobian, 1., 1e-12);
+  EXPECT_NEAR(c.mean_scaled_jacobian, 1., 1e-12);
+  EXPECT_EQ(c.low_quality_share, 0.);
+  EXPECT_NEAR(c.total_volume, a * b * cc * 0.125, 1e-12);
+
+  const auto L = T::make_L_block(2, 3);
+  EXPECT_NEAR(HR::check_hexahedral_mesh(L.mesh).total_volume, 3 * 4 * 3, 1e-10);
+  const double pi = 3.14159265358979323846;
+  for(int n : {3, 5, 6}) {
+    const auto p = T::make_polygon_prism(n, 4, 0.5);
+    // planar faces: the 24-tet volume is exact, area of the n-gon x height
+    EXPECT_NEAR(HR::check_hexahedral_mesh(p.mesh).total_volume, 0.5 * n * std::sin(2 * pi / n) * 2., 1e-12);
+  }
+  // the twist preserves volume; the bilinear faces only approximately
+  EXPECT_NEAR(HR::check_hexahedral_mesh(T::make_twisted_grid(3, 3, 4).mesh).total_volume, 36., 0.36);
+  const double ball = HR::check_hexahedral_mesh(T::make_cubed_ball(3, 2).mesh).total_volume;
+  EXPECT_LT(ball, 4. / 3. * pi);
+  EXPECT_GT(ball, 0.85 * 4. / 3. * pi);
+}
+
+TEST(CheckHexahedralMesh, PrismAxisIsOneChainOfValenceN)
+{
+  for(int n : {3, 5, 6})
+    for(int layers : {1, 3}) {
+      const auto c = HR::check_hexahedral_mesh(T::make_polygon_prism(n, layers).mesh);
+      const std::map<int, std::size_t> axis{ {n, std::size_t(layers)} };
+      EXPECT_EQ(c.irregular_interior_edges, axis) << n << " " << layers;
+    }
+  // n = 4: a plain 2 x 2 grid in disguise
+  EXPECT_TRUE(HR::check_hexahedral_mesh(T::make_polygon_prism(4, 2).mesh).irregular_interior_edges.empty());
+}
+
+TEST(CheckHexahedralMesh, InvertedHexahedra)
+{
+  // geometrically inverted corner, combinatorially fine
+  auto g = T::make_grid(1, 1, 1);
+  g.mesh.points[6] = HR::Hexahedral_mesh_3::Point_3(0.2, 0.2, 0.2);
+  auto c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_TRUE(c.conforming);
+  EXPECT_EQ(c.inverted_hexahedra, 1u);
+  EXPECT_LT(c.min_scaled_jacobian, 0.);
+  EXPECT_FALSE(c.valid);
+
+  // mirrored vertex order of a corner hex of a 2x2x2 grid: negative and its 3 inner faces same-oriented
+  g = T::make_grid(2, 2, 2);
+  std::swap(g.mesh.hexahedra[0][1], g.mesh.hexahedra[0][3]);
+  std::swap(g.mesh.hexahedra[0][5], g.mesh.hexahedra[0][7]);
+  c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_EQ(c.inverted_hexahedra, 1u);
+  EXPECT_NEAR(c.min_scaled_jacobian, -1., 1e-12);
+  EXPECT_EQ(c.same_orientation_quads, 3u);
+  EXPECT_EQ(c.non_conforming_quads, 3u);
+  EXPECT_FALSE(c.conforming);
+  EXPECT_FALSE(c.valid);
+  EXPECT_NEAR(c.total_volume, 6., 1e-12);
+}
+
+TEST(CheckHexahedralMesh, DuplicatedHexahedronAndVertex)
+{
+  auto g = T::make_grid(2, 2, 2);
+  g.mesh.hexahedra.push_back(g.mesh.hexahedra[0]);
+  auto c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_EQ(c.duplicate_hexahedra, 1u);
+  EXPECT_EQ(c.same_orientation_quads, 3u);  // its 3 boundary faces, now in 2 hexes the same way
+  EXPECT_EQ(c.overused_quads, 3u);          // its 3 inner faces, now in 3 hexes
+  EXPECT_FALSE(c.valid);
+
+  // a vertex split in two coincident copies: a crack between the hexes
+  g = T::make_grid(2, 1, 1);
+  const auto copy = static_cast<HR::Hexahedral_mesh_3::Index>(g.mesh.points.size());
+  g.mesh.points.push_back(g.mesh.points[1]);
+  g.mesh.hexahedra[1][0] = copy;  // vertex 1 is corner 0 of the second hex
+  c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_EQ(c.duplicate_vertices, 1u);
+  EXPECT_FALSE(c.valid);
+  // an unused vertex is counted, not a defect
+  g = T::make_grid(1, 1, 1);
+  g.mesh.points.emplace_back(5., 5., 5.);
+  c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_EQ(c.unused_vertices, 1u);
+  EXPECT_TRUE(c.valid);
+}
+
+TEST(CheckHexahedralMesh, MissingHexahedra)
+{
+  // the centre of a 3x3x3 grid removed: an inner spherical boundary with 12 concave edges
+  auto g = T::make_grid(3, 3, 3);
+  g.mesh.hexahedra.erase(g.mesh.hexahedra.begin() + 13);
+  auto c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.boundary_quads, 54u + 6u);
+  EXPECT_EQ(c.boundary_components, 2u);
+  EXPECT_EQ(c.boundary_euler_characteristic, 4);
+  const std::map<int, std::size_t> boundary{ {1, 36u}, {3, 12u} };
+  EXPECT_EQ(c.irregular_boundary_edges, boundary);
+  EXPECT_TRUE(c.irregular_interior_edges.empty());
+  EXPECT_NEAR(c.total_volume, 26., 1e-12);
+
+  // 2x2x1 without two opposite hexes: the two left touch along one edge only
+  g = T::make_grid(2, 2, 1);
+  g.mesh.hexahedra = {g.mesh.hexahedra[0], g.mesh.hexahedra[3]};
+  c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_TRUE(c.conforming);
+  EXPECT_EQ(c.non_manifold_boundary_edges, 1u);    // the shared vertical edge, in 4 boundary quads
+  EXPECT_EQ(c.non_manifold_boundary_vertices, 2u); // its ends: links of two cycles
+  EXPECT_FALSE(c.manifold_boundary);
+  EXPECT_FALSE(c.valid);
+  EXPECT_EQ(c.boundary_components, 1u);
+
+  // a hex with a repeated vertex and one with an index out of range are left out and counted
+  g = T::make_grid(2, 1, 1);
+  g.mesh.hexahedra.push_back(g.mesh.hexahedra[0]);
+  g.mesh.hexahedra.back()[7] = g.mesh.hexahedra.back()[0];
+  g.mesh.hexahedra.push_back(g.mesh.hexahedra[0]);
+  g.mesh.hexahedra.back()[3] = 1000;
+  c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_EQ(c.invalid_hexahedra, 2u);
+  EXPECT_EQ(c.boundary_quads, 10u);
+  EXPECT_FALSE(c.valid);
+
+  EXPECT_FALSE(HR::check_hexahedral_mesh(HR::Hexahedral_mesh_3()).valid);
+}
+
+TEST(CheckHexahedralMesh, OverlappingHexesSharingAFaceTheSameWay)
+{
+  // B = [0.5, 1] x [0, 1]^2 shares A's face x = 1 but lies on A's side: both positive, not conforming
+  auto g = T::make_grid(1, 1, 1);
+  typedef HR::Hexahedral_mesh_3::Point_3 P;
+  const auto& A = g.mesh.hexahedra[0];
+  const auto n = static_cast<HR::Hexahedral_mesh_3::Index>(g.mesh.points.size());
+  g.mesh.points.push_back(P(0.5, 0, 0));
+  g.mesh.points.push_back(P(0.5, 1, 0));
+  g.mesh.points.push_back(P(0.5, 1, 1));
+  g.mesh.points.push_back(P(0.5, 0, 1));
+  const std::array<HR::Hexahedral_mesh_3::Index, 8> B{ {n, A[1], A[2], n + 1, n + 3, A[5], A[6], n + 2} };
+  g.mesh.hexahedra.push_back(B);
+  const auto c = HR::check_hexahedral_mesh(g.mesh);
+  EXPECT_GT(c.min_scaled_jacobian, 0.99);
+  EXPECT_EQ(c.same_orientation_quads, 1u);
+  EXPECT_FALSE(c.conforming);
+  EXPECT_FALSE(c.valid);
+}
+
+TEST(CheckHexahedralMesh, NamedParameters)
+{
+  auto g = T::make_twisted_grid(3, 3, 4, 1.2);
+  const auto sj = HR::hexahedra_scaled_jacobians(g.mesh);
+  const double mid = 0.5 * (*std::min_element(sj.begin(), sj.end()) + *std::max_element(sj.begin(), sj.end()));
+  std::size_t below = 0;
+  for(double s : sj) below += (s < mid);
+  const auto c = HR::check_hexahedral_mesh(g.mesh, HR::parameters::low_scaled_jacobian_threshold(mid));
+  EXPECT_DOUBLE_EQ(c.low_quality_share, double(below) / double(sj.size()));
+  EXPECT_DOUBLE_EQ(c.min_scaled_jacobian, *std::min_element(sj.begin(), sj.end()));
+  // vertices 0.01 apart in a box of diagonal ~2.4: duplicates at a relative tolerance of 1e-2, not at 1e-9
+  g = T::make_grid(2, 1, 1);
+  const auto copy = static_cast<HR::Hexahedral_mesh_3::Index>(g.mesh.points.size());
+  g.mesh.points.push_back(HR::Hexahedral_mesh_3::Point_3(1.01, 0., 0.));
+  g.mesh.hexahedra[1][0] = copy;
+  EXPECT_EQ(HR::check_hexahedral_mesh(g.mesh).duplicate_vertices, 0u);
+  EXPECT_EQ(HR::check_hexahedral_mesh(g.mesh, HR::parameters::duplicate_vertex_tolerance(1e-2)).duplicate_vertices, 1u);
 }
