@@ -3,6 +3,9 @@
 // Author(s) : Hexahedral_remeshing developers
 #include "hex_mesh_generators.h"
 
+#include <CGAL/Hexahedral_remeshing/IO/read_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
 
@@ -11,6 +14,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <array>
 #include <map>
 #include <set>
@@ -308,4 +316,157 @@ TEST(CheckHexahedralMesh, NamedParameters)
   g.mesh.hexahedra[1][0] = copy;
   EXPECT_EQ(HR::check_hexahedral_mesh(g.mesh).duplicate_vertices, 0u);
   EXPECT_EQ(HR::check_hexahedral_mesh(g.mesh, HR::parameters::duplicate_vertex_tolerance(1e-2)).duplicate_vertices, 1u);
+}
+
+namespace {
+
+std::string temp_file(const std::string& name)
+{
+  return (std::filesystem::temp_directory_path() / ("hexmesh3_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+std::string file_text(const std::string& filename)
+{
+  std::ifstream in(filename);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void expect_same_mesh(const HR::Hexahedral_mesh_3& a, const HR::Hexahedral_mesh_3& b)
+{
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for(std::size_t v = 0; v < a.points.size(); ++v)
+    EXPECT_EQ(a.points[v], b.points[v]) << v;  // 17 digits: exact round trip
+  EXPECT_EQ(a.hexahedra, b.hexahedra);
+  EXPECT_EQ(a.vertex_tags, b.vertex_tags);
+}
+
+} // namespace
+
+TEST(HexahedralMeshIO, RoundTripMEDITAndVTK)
+{
+  auto g = T::make_cubed_ball(3, 1);
+  auto& m = g.mesh;
+  m.vertex_tags.resize(m.points.size());
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    m.vertex_tags[v] = std::uint8_t(v % 8);
+  m.hexahedron_source_tetrahedra.resize(m.hexahedra.size());
+  for(std::size_t h = 0; h < m.hexahedra.size(); ++h)
+    m.hexahedron_source_tetrahedra[h] = HR::Hexahedral_mesh_3::Index(3 * h);
+  m.hexahedron_source_tetrahedra[5] = (std::numeric_limits<HR::Hexahedral_mesh_3::Index>::max)();
+
+  for(const std::string ext : {"mesh", "vtk", "VTK"}) {
+    SCOPED_TRACE(ext);
+    const std::string file = temp_file("round_trip." + ext);
+    HR::IO::write_hexahedral_mesh(file, m);
+    EXPECT_FALSE(std::filesystem::exists(file + ".tmp"));
+    HR::Hexahedral_mesh_3 back;
+    HR::IO::read_hexahedral_mesh(file, back);
+    expect_same_mesh(m, back);
+    if(ext != "mesh") {
+      EXPECT_EQ(back.hexahedron_source_tetrahedra, m.hexahedron_source_tetrahedra);
+      const std::string text = file_text(file);
+      EXPECT_NE(text.find("CELL_TYPES 81\n12\n"), std::string::npos);
+      EXPECT_NE(text.find("SCALARS scaled_jacobian double 1"), std::string::npos);
+      EXPECT_NE(text.find("SCALARS tags double 1"), std::string::npos);
+    } else {
+      EXPECT_TRUE(back.hexahedron_source_tetrahedra.empty());  // MEDIT has no place for them
+      EXPECT_NE(file_text(file).find("Hexahedra\n81\n"), std::string::npos);
+    }
+    EXPECT_TRUE(HR::check_hexahedral_mesh(back).valid);
+    std::remove(file.c_str());
+  }
+
+  // without the optional arrays: MEDIT refs 0 read back as all-zero tags, VTK without arrays as none
+  auto plain = T::make_grid(1, 2, 1).mesh;
+  const std::string vtk = temp_file("plain.vtk"), medit = temp_file("plain.mesh");
+  HR::IO::write_VTK(vtk, plain);
+  HR::IO::write_MEDIT(medit, plain);
+  HR::Hexahedral_mesh_3 back;
+  HR::IO::read_hexahedral_mesh(vtk, back);
+  EXPECT_TRUE(back.vertex_tags.empty());
+  EXPECT_TRUE(back.hexahedron_source_tetrahedra.empty());
+  EXPECT_EQ(back.hexahedra, plain.hexahedra);
+  HR::IO::read_hexahedral_mesh(medit, back);
+  EXPECT_EQ(back.vertex_tags, std::vector<std::uint8_t>(plain.points.size(), 0));
+  EXPECT_EQ(back.hexahedra, plain.hexahedra);
+  std::remove(vtk.c_str());
+  std::remove(medit.c_str());
+}
+
+TEST(HexahedralMeshIO, WritersRejectBrokenMeshesAndLeaveNoFile)
+{
+  auto m = T::make_grid(1, 1, 1).mesh;
+  m.hexahedra[0][3] = 99;
+  for(const std::string ext : {"mesh", "vtk"}) {
+    const std::string file = temp_file("broken." + ext);
+    EXPECT_THROW(HR::IO::write_hexahedral_mesh(file, m), HR::Error);
+    EXPECT_FALSE(std::filesystem::exists(file));
+    EXPECT_FALSE(std::filesystem::exists(file + ".tmp"));
+  }
+  auto ok = T::make_grid(1, 1, 1).mesh;
+  ok.vertex_tags.assign(3, 0);  // wrong size
+  EXPECT_THROW(HR::IO::write_VTK(temp_file("tags.vtk"), ok), HR::Error);
+  EXPECT_FALSE(std::filesystem::exists(temp_file("tags.vtk")));
+  EXPECT_THROW(HR::IO::write_hexahedral_mesh(temp_file("x.obj"), T::make_grid(1, 1, 1).mesh), HR::Error);
+  EXPECT_THROW(HR::IO::write_hexahedral_mesh("/nonexistent_dir_hexmesh3/x.vtk", T::make_grid(1, 1, 1).mesh), HR::Error);
+}
+
+TEST(HexahedralMeshIO, ReadersRejectDefectsClearly)
+{
+  const std::string medit_ok =
+    "MeshVersionFormatted 1\nDimension 3\nVertices\n8\n"
+    "0 0 0 0\n1 0 0 0\n1 1 0 0\n0 1 0 0\n0 0 1 0\n1 0 1 0\n1 1 1 0\n0 1 1 0\n"
+    "Hexahedra\n1\n1 2 3 4 5 6 7 8 1\nEnd\n";
+  HR::Hexahedral_mesh_3 m;
+  HR::IO::read_hexahedral_mesh_MEDIT(medit_ok, "ok.mesh", m);
+  EXPECT_EQ(m.hexahedra.size(), 1u);
+  EXPECT_NEAR(HR::check_hexahedral_mesh(m).min_scaled_jacobian, 1., 1e-15);
+
+  auto expect_error = [](const std::string& text, bool vtk, const std::string& words, std::size_t line) {
+    HR::Hexahedral_mesh_3 out;
+    try {
+      if(vtk) HR::IO::read_hexahedral_mesh_VTK(text, "bad", out);
+      else HR::IO::read_hexahedral_mesh_MEDIT(text, "bad", out);
+      ADD_FAILURE() << "no error for: " << words;
+    } catch(const HR::Input_error& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      if(line > 0) EXPECT_EQ(e.line(), line) << e.what();
+    }
+  };
+  auto replace = [](std::string s, const std::string& from, const std::string& to) {
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  expect_error(medit_ok.substr(0, medit_ok.size() - 12), false, "unexpected end of file", 0);
+  expect_error(replace(medit_ok, "1 2 3 4 5 6 7 8 1", "1 2 3 4 5 6 7 9 1"), false, "out of range", 15);
+  expect_error(replace(medit_ok, "1 2 3 4 5 6 7 8 1", "0 2 3 4 5 6 7 8 1"), false, "1-based", 15);
+  expect_error(replace(medit_ok, "1 1 0 0\n0 1 0 0", "1 nan 0 0\n0 1 0 0"), false, "non-finite", 7);
+  expect_error(replace(medit_ok, "Hexahedra\n1\n", "Hexahedra\n1000\n"), false, "exceeds", 0);
+  expect_error(replace(medit_ok, "Hexahedra\n1\n1 2 3 4 5 6 7 8 1\n", ""), false, "no hexahedron", 0);
+  expect_error("MeshVersionFormatted 1\nDimension 3\nEnd\n", false, "no Vertices", 0);
+  EXPECT_THROW(HR::IO::read_hexahedral_mesh_MEDIT(replace(medit_ok, "Hexahedra", "Hexaedres"), "bad", m),
+               HR::Unsupported_input);
+
+  const std::string vtk_ok =
+    "# vtk DataFile Version 2.0\nhex\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    "CELLS 2 13\n8 0 1 2 3 4 5 6 7\n3 0 1 2\nCELL_TYPES 2\n12\n5\n"
+    "CELL_DATA 2\nSCALARS source_tetrahedron double 1\nLOOKUP_TABLE default\n7\n-1\n"
+    "POINT_DATA 8\nSCALARS tags double 1\nLOOKUP_TABLE default\n1\n1\n1\n1\n3\n3\n7\n0\n";
+  HR::IO::read_hexahedral_mesh_VTK(vtk_ok, "ok.vtk", m);
+  ASSERT_EQ(m.hexahedra.size(), 1u);  // the triangle is ignored
+  EXPECT_EQ(m.hexahedron_source_tetrahedra, std::vector<HR::Hexahedral_mesh_3::Index>{7});
+  EXPECT_EQ(m.vertex_tags, (std::vector<std::uint8_t>{1, 1, 1, 1, 3, 3, 7, 0}));
+  expect_error(replace(vtk_ok, "8 0 1 2 3 4 5 6 7", "7 0 1 2 3 4 5 6"), true, "instead of 8", 15);
+  expect_error(replace(vtk_ok, "8 0 1 2 3 4 5 6 7", "8 0 1 2 3 4 5 6 8"), true, "out of range", 15);
+  expect_error(replace(vtk_ok, "CELL_TYPES 2\n12\n5", "CELL_TYPES 2\n5\n5"), true, "no hexahedron", 0);
+  expect_error(replace(vtk_ok, "CELL_TYPES 2", "CELL_TYPES 3"), true, "differs", 17);
+  expect_error(replace(vtk_ok, "0 1 1\nCELLS", "0 1 inf\nCELLS"), true, "non-finite", 13);
+  expect_error(replace(vtk_ok, "3\n3\n7\n0\n", "3\n3\n9\n0\n"), true, "not a tag", 0);
+  expect_error(vtk_ok.substr(0, 150), true, "unexpected end of file", 0);
+  EXPECT_THROW(HR::IO::read_hexahedral_mesh_VTK(replace(vtk_ok, "ASCII", "BINARY"), "bad", m), HR::Unsupported_input);
+  EXPECT_THROW(HR::IO::read_hexahedral_mesh(temp_file("missing.vtk"), m), HR::Input_error);
+  EXPECT_THROW(HR::IO::read_hexahedral_mesh("x.off", m), HR::Unsupported_input);
 }
