@@ -5,6 +5,9 @@
 
 #include <CGAL/Hexahedral_remeshing/IO/read_hexahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/IO/read_VTK.h>
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
@@ -469,4 +472,52 @@ TEST(HexahedralMeshIO, ReadersRejectDefectsClearly)
   EXPECT_THROW(HR::IO::read_hexahedral_mesh_VTK(replace(vtk_ok, "ASCII", "BINARY"), "bad", m), HR::Unsupported_input);
   EXPECT_THROW(HR::IO::read_hexahedral_mesh(temp_file("missing.vtk"), m), HR::Input_error);
   EXPECT_THROW(HR::IO::read_hexahedral_mesh("x.off", m), HR::Unsupported_input);
+}
+
+// The exploded map: 4 own points per tet, the corner parameters as `uvw`, the parameter volume per tet
+// (k^3 / 24 for every tet of a hex scaled by k: the 24 tets split the k-cube evenly).
+TEST(HexahedralMeshIO, IntegerGridMapVTK)
+{
+  const int k = 2;
+  const auto g = T::make_L_block(1, 1);
+  const HR::Integer_grid_map map = T::map_from_hex_mesh(g.mesh, k, 5u);
+  const std::string file = temp_file("map.vtk");
+  HR::IO::VTK_array ids;
+  ids.name = "tet";
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t) ids.values.push_back(double(t));
+  HR::IO::write_VTK_integer_grid_map(file, map, {ids});
+  const std::string text = file_text(file);
+  std::remove(file.c_str());
+
+  // the geometry through the package's own tetrahedral reader
+  HR::Tetrahedral_soup_3<HR::Hexahedral_mesh_3::Point_3> soup;
+  HR::IO::read_VTK(text, file, soup);
+  ASSERT_EQ(soup.points.size(), 4 * map.tetrahedra.size());
+  ASSERT_EQ(soup.tetrahedra.size(), map.tetrahedra.size());
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t)
+    for(int i = 0; i < 4; ++i) {
+      EXPECT_EQ(soup.tetrahedra[t][i], 4 * t + i);
+      EXPECT_EQ(soup.points[4 * t + i], map.points[map.tetrahedra[t][i]]);
+    }
+  // the arrays by hand
+  std::istringstream in(text.substr(text.find("SCALARS parameter_volume double 1\nLOOKUP_TABLE default\n") + 56));
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t) {
+    double v;
+    in >> v;
+    EXPECT_NEAR(v, k * k * k / 24., 1e-12) << t;
+  }
+  std::istringstream uvw(text.substr(text.find("VECTORS uvw double\n") + 19));
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t)
+    for(int i = 0; i < 4; ++i)
+      for(int d = 0; d < 3; ++d) {
+        double u;
+        uvw >> u;
+        EXPECT_EQ(u, map.parameters[t][i][d]);
+      }
+  EXPECT_NE(text.find("SCALARS tet double 1"), std::string::npos);
+
+  HR::Integer_grid_map broken = map;
+  broken.parameters.pop_back();
+  EXPECT_THROW(HR::IO::write_VTK_integer_grid_map(file, broken), HR::Error);
+  EXPECT_FALSE(std::filesystem::exists(file));
 }
