@@ -9,6 +9,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/read_VTK.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_to_lcc.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
 
@@ -520,4 +521,47 @@ TEST(HexahedralMeshIO, IntegerGridMapVTK)
   broken.parameters.pop_back();
   EXPECT_THROW(HR::IO::write_VTK_integer_grid_map(file, broken), HR::Error);
   EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+// CGAL's linear cell complex of the generated meshes: one 3-cell per hex, one 0-cell per vertex, the
+// 3-free facets are the boundary quads, the edges and faces are the mesh's, and the complex is valid.
+TEST(HexahedralMeshToLCC, CellsAndBoundary)
+{
+  for(const auto& g : T::all_generated_hex_meshes()) {
+    SCOPED_TRACE(g.name);
+    typedef CGAL::Linear_cell_complex_for_combinatorial_map<3> LCC;
+    LCC lcc;
+    const auto darts = HR::hexahedral_mesh_to_lcc(g.mesh, lcc);
+    ASSERT_EQ(darts.size(), g.mesh.hexahedra.size());
+    EXPECT_TRUE(lcc.is_valid());
+    EXPECT_EQ(lcc.number_of_darts(), 24 * g.mesh.hexahedra.size());
+    EXPECT_EQ(lcc.one_dart_per_cell<3>().size(), g.expected.hexahedra);
+    EXPECT_EQ(lcc.one_dart_per_cell<0>().size(), g.expected.vertices);
+    EXPECT_EQ(lcc.number_of_vertex_attributes(), g.expected.vertices);
+    std::size_t free_facets = 0, facets = 0;
+    for(auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+      ++facets;
+      free_facets += lcc.is_free<3>(d);
+    }
+    EXPECT_EQ(free_facets, g.expected.boundary_quads);
+    EXPECT_EQ(facets, (6 * g.expected.hexahedra + g.expected.boundary_quads) / 2);
+    const auto c = HR::check_hexahedral_mesh(g.mesh);
+    EXPECT_EQ(lcc.one_dart_per_cell<1>().size(), c.interior_edges + c.boundary_edges);
+    // the dart of each hex sits on its vertex 0
+    for(std::size_t h = 0; h < darts.size(); ++h)
+      EXPECT_EQ(lcc.point(darts[h]), g.mesh.points[g.mesh.hexahedra[h][0]]);
+  }
+  // a hole in the middle: two boundary components, 60 3-free facets
+  auto g = T::make_grid(3, 3, 3);
+  g.mesh.hexahedra.erase(g.mesh.hexahedra.begin() + 13);
+  const auto lcc = HR::hexahedral_mesh_to_lcc(g.mesh);
+  EXPECT_TRUE(lcc.is_valid());
+  EXPECT_EQ(lcc.one_dart_per_cell<3>().size(), 26u);
+  std::size_t free_facets = 0;
+  for(auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d)
+    free_facets += lcc.is_free<3>(d);
+  EXPECT_EQ(free_facets, 60u);
+  auto broken = T::make_grid(1, 1, 1).mesh;
+  broken.hexahedra[0][2] = 8;
+  EXPECT_THROW(HR::hexahedral_mesh_to_lcc(broken), HR::Error);
 }
