@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "hex_mesh_generators.h"
+
+#include <chrono>
 #include <cstdio>
+#include <map>
+#include <set>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +30,87 @@ HR::Integer_grid_map read(const std::string& file)
   HR::Integer_grid_map map;
   HR::IO::read_HexEx(file, map);
   return map;
+}
+
+// Independent measures of an extracted hex mesh (not the package's checker).
+struct Hex_measures
+{
+  double min_sj = 2., mean_sj = 0.;
+  std::size_t boundary_quads = 0, nonconforming_quads = 0, unused_vertices = 0, bad_boundary_tags = 0;
+  std::map<int, std::size_t> interior_irregular, boundary_irregular;
+};
+
+double corner_sj(const std::array<Eigen::Vector3d, 8>& p, int i)
+{
+  static const int nb[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+  Eigen::Vector3d e[3];
+  for(int k = 0; k < 3; ++k) {
+    e[k] = p[nb[i][k]] - p[i];
+    const double n = e[k].norm();
+    if(n == 0.) return 0.;
+    e[k] /= n;
+  }
+  return e[0].dot(e[1].cross(e[2]));
+}
+
+Hex_measures measure(const HR::Hexahedral_mesh_3& m)
+{
+  Hex_measures r;
+  // outward faces of a VTK hexahedron
+  static const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::map<std::array<std::uint32_t, 4>, std::vector<std::array<std::uint32_t, 4> > > quads;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_hexes;
+  std::vector<char> used(m.points.size(), 0);
+  for(const auto& h : m.hexahedra) {
+    std::array<Eigen::Vector3d, 8> p;
+    for(int i = 0; i < 8; ++i) {
+      p[i] = Eigen::Vector3d(m.points[h[i]].x(), m.points[h[i]].y(), m.points[h[i]].z());
+      used[h[i]] = 1;
+    }
+    double sj = 2.;
+    for(int i = 0; i < 8; ++i) sj = (std::min)(sj, corner_sj(p, i));
+    r.min_sj = (std::min)(r.min_sj, sj);
+    r.mean_sj += sj / double(m.hexahedra.size());
+    for(const auto& f : faces) {
+      std::array<std::uint32_t, 4> c = {{h[f[0]], h[f[1]], h[f[2]], h[f[3]]}};
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+      std::array<std::uint32_t, 4> key = c;
+      std::sort(key.begin(), key.end());
+      quads[key].push_back(c);
+    }
+    static const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for(const auto& e : edges) ++edge_hexes[std::minmax(h[e[0]], h[e[1]])];
+  }
+  std::set<std::pair<std::uint32_t, std::uint32_t> > boundary_edges;
+  std::set<std::uint32_t> boundary_vertices;
+  for(const auto& kv : quads) {
+    if(kv.second.size() == 1) {
+      ++r.boundary_quads;
+      const auto& c = kv.second[0];
+      for(int i = 0; i < 4; ++i) {
+        boundary_edges.insert(std::minmax(c[i], c[(i + 1) % 4]));
+        boundary_vertices.insert(c[i]);
+      }
+    } else if(kv.second.size() == 2) {
+      const auto& a = kv.second[0];
+      const std::array<std::uint32_t, 4> reversed = {{a[0], a[3], a[2], a[1]}};
+      if(kv.second[1] != reversed) ++r.nonconforming_quads;
+    } else {
+      r.nonconforming_quads += kv.second.size();
+    }
+  }
+  for(const auto& kv : edge_hexes) {
+    if(boundary_edges.count(kv.first)) { if(kv.second != 2) ++r.boundary_irregular[kv.second]; }
+    else if(kv.second != 4) ++r.interior_irregular[kv.second];
+  }
+  for(std::size_t v = 0; v < m.points.size(); ++v) {
+    r.unused_vertices += used[v] ? 0 : 1;
+    if(!m.vertex_tags.empty() && used[v]) {
+      const bool tagged = (m.vertex_tags[v] & HR::Hexahedral_mesh_3::BOUNDARY) != 0;
+      if(tagged != (boundary_vertices.count(std::uint32_t(v)) > 0)) ++r.bad_boundary_tags;
+    }
+  }
+  return r;
 }
 
 std::string error_of_file(const std::string& name)
@@ -143,4 +229,49 @@ TEST(MapCheck, SharedMaps)
   const HR::Integer_grid_map_check sphere = HR::check_integer_grid_map(read(igm_data + "sphere.hexex"));
   EXPECT_EQ(sphere.degenerate_tetrahedra, 2u);
   EXPECT_TRUE(sphere.is_integer_grid());
+}
+
+TEST(Extraction, GeneratedHexMeshesGiveBackKCubedHexesPerHex)
+{
+  const auto meshes = HR::test::all_generated_hex_meshes();
+  unsigned seed = 1;
+  for(const auto& g : meshes) {
+    for(int k = 1; k <= 3; ++k) {
+      const bool given = (seed % 2) == 0; // transitions given by the producer, or recovered
+      const HR::Integer_grid_map map = HR::test::map_from_hex_mesh(g.mesh, k, seed++, given);
+      HR::Hexahedral_mesh_3 hexes;
+      const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes);
+      const HR::test::Hex_mesh_oracle o = HR::test::scaled_oracle(g.expected, k);
+      SCOPED_TRACE(g.name + " k=" + std::to_string(k));
+      EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::OK);
+      ASSERT_EQ(hexes.hexahedra.size(), o.hexahedra);
+      EXPECT_EQ(r.hexahedra, o.hexahedra);
+      if(o.vertices) EXPECT_EQ(hexes.points.size(), o.vertices);
+      const Hex_measures m = measure(hexes);
+      EXPECT_GT(m.min_sj, 0.);
+      EXPECT_EQ(m.nonconforming_quads, 0u);
+      EXPECT_EQ(m.boundary_quads, o.boundary_quads);
+      EXPECT_EQ(m.unused_vertices, 0u);
+      EXPECT_EQ(m.bad_boundary_tags, 0u);
+      EXPECT_EQ(m.interior_irregular, o.interior_irregular_edges);
+      EXPECT_EQ(m.boundary_irregular, o.boundary_irregular_edges);
+      ASSERT_EQ(hexes.vertex_locations.size(), hexes.points.size());
+      ASSERT_EQ(hexes.hexahedron_source_tetrahedra.size(), hexes.hexahedra.size());
+      if(k == 1) {
+        // the same hexahedra, vertex positions bit for bit (corners are tet vertices)
+        std::set<std::vector<double> > original, extracted;
+        auto key = [](const HR::Hexahedral_mesh_3& mesh, const std::array<std::uint32_t, 8>& h) {
+          std::vector<std::array<double, 3> > p;
+          for(int i = 0; i < 8; ++i) p.push_back({{mesh.points[h[i]].x(), mesh.points[h[i]].y(), mesh.points[h[i]].z()}});
+          std::sort(p.begin(), p.end());
+          std::vector<double> v;
+          for(const auto& q : p) v.insert(v.end(), q.begin(), q.end());
+          return v;
+        };
+        for(const auto& h : g.mesh.hexahedra) original.insert(key(g.mesh, h));
+        for(const auto& h : hexes.hexahedra) extracted.insert(key(hexes, h));
+        EXPECT_EQ(original, extracted);
+      }
+    }
+  }
 }

@@ -4,14 +4,23 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_EXTRACTION_H
 #define CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_EXTRACTION_H
 
+#include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/Integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/internal/extraction/check_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/extraction/hex_cells.h>
+#include <CGAL/Hexahedral_remeshing/internal/extraction/hex_vertices.h>
 #include <CGAL/Hexahedral_remeshing/internal/extraction/map_topology.h>
+#include <CGAL/Hexahedral_remeshing/internal/extraction/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/extraction/transitions.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <sstream>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -89,7 +98,7 @@ struct Integer_grid_map_check
 /// inverted and degenerate tetrahedra by the exact orientation of their parameter points (and of their
 /// positions), and the
 /// valence of every edge from its parameter-space dihedral-angle sum (HexEx's singularity test,
-/// Lyon, Bommes, Kobbelt 2016). Runs in O(#tetrahedra log #tetrahedra).
+/// Lyon, Bommes, Kobbelt 2016). Runs in O(n log n) for n tetrahedra.
 /// \throws Input_error if the tetrahedra are not a manifold (a face shared by more than two) or a
 ///         vertex id is out of range.
 inline Integer_grid_map_check check_integer_grid_map(const Integer_grid_map& map)
@@ -149,6 +158,205 @@ inline Integer_grid_map_check check_integer_grid_map(const Integer_grid_map& map
     else ++check.interior_edge_valences[valence];
   }
   return check;
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Default visitor of `extract_hexahedra()`: every hook does nothing. Derive from it and pass it with
+/// the named parameter `visitor` to follow the progress.
+struct Hexahedral_extraction_visitor
+{
+  /// Called when a step starts (`"topology"`, `"sanitize"`, `"vertices"`, `"cells"`).
+  void start_stage(const std::string& /*stage*/) {}
+  /// Called when a step ends, with its duration in seconds.
+  void end_stage(const std::string& /*stage*/, double /*seconds*/) {}
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Outcome of `extract_hexahedra()`: counts, the defects met and the time of each step.
+struct Hexahedral_extraction_result
+{
+  /// `OK`: no defect met; `DEFECTS`: the mesh was extracted but some defect below is non-zero (cells may
+  /// be missing where the map is broken).
+  enum Status {
+    OK,     ///< no defect
+    DEFECTS ///< extracted with defects
+  };
+  /// Overall status.
+  Status status = OK;
+  /// Hexahedra emitted.
+  std::size_t hexahedra = 0;
+  /// Hex vertices (integer points of the map; some may belong to no emitted hexahedron near defects).
+  std::size_t vertices = 0;
+  /// Tetrahedra with coplanar parameter points (tolerated: they carry no cell interior).
+  std::size_t degenerate_tetrahedra = 0;
+  /// Tetrahedra with negatively oriented parameter points (their interiors are skipped).
+  std::size_t inverted_tetrahedra = 0;
+  /// Tetrahedra with negatively oriented positions (the hexahedra there may be folded in model space).
+  std::size_t inverted_positions = 0;
+  /// Cell corners that could not be reached from the cell centre through the tetrahedra (the hex
+  /// edges that could not be traced).
+  std::size_t untraced_corners = 0;
+  /// Cells left out because a corner was missing or ambiguous.
+  std::size_t incomplete_cells = 0;
+  /// Cells found twice (from two centres; only the first is kept).
+  std::size_t duplicate_cells = 0;
+  /// Tetrahedra reached with two different transitions while walking a cell.
+  std::size_t inconsistent_walks = 0;
+  /// Vertices moved onto the fixed axis of a singular edge while sanitizing.
+  std::size_t singular_snaps = 0;
+  /// Holonomies without a fixed point, boundary vertices on two different planes, faces whose
+  /// transition does not hold exactly after sanitizing.
+  std::size_t sanitizing_failures = 0;
+  /// Largest change of a parameter by the sanitizing (parameter units).
+  double max_sanitizing_move = 0.;
+  /// Seconds of the topology and transitions.
+  double topology_seconds = 0.;
+  /// Seconds of the sanitizing.
+  double sanitize_seconds = 0.;
+  /// Seconds of the hex vertices and cell centres.
+  double vertices_seconds = 0.;
+  /// Seconds of the cells.
+  double cells_seconds = 0.;
+  /// Total seconds.
+  double seconds = 0.;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Extracts the hexahedral mesh of an integer-grid map: its hexahedra are the integer unit cubes of
+/// parameter space (Lyon, Bommes, Kobbelt 2016, "HexEx: Robust Hexahedral Mesh Extraction"). The map
+/// type holds the tetrahedral mesh (positions and tetrahedra), so no separate mesh is passed.
+///
+/// Steps: (1) topology and transitions, recovered per face when `map.transitions` is empty (see
+/// `check_integer_grid_map()`); (2) sanitizing: one reference chart per vertex, parameters on a
+/// common dyadic grid, pushed through the transitions, boundary faces snapped onto their integer
+/// planes and vertices of singular edges onto the edges' axes, so that every transition holds
+/// exactly; (3) hex vertices and cell centres: the points of `Z^3` and `Z^3 + (1/2,1/2,1/2)` on each
+/// simplex by the lowest-dimension rule with exact orientation tests (Epick on the sanitized doubles),
+/// each identified by its simplex and its coordinates in that simplex's owner chart; (4) cells: from
+/// each centre a walk through the tetrahedra covering the open unit cube, across the transitions,
+/// finds its 8 corners. Positions are barycentric interpolations of the tetrahedra's vertex positions.
+///
+/// Zero-volume tetrahedra are tolerated; where the map is folded (inverted tetrahedra) the cells that
+/// cannot be completed are left out and counted, never emitted broken.
+///
+/// \param map the integer-grid map (parameters in hex edges; `map.source` names it in errors)
+/// \param hexes the output (overwritten): points, hexahedra in VTK order (positively oriented in the
+///        parameter chart), `vertex_locations` (simplex of the tetrahedral mesh), `vertex_tags`
+///        (`BOUNDARY` on a boundary face of the tetrahedral mesh), `hexahedron_source_tetrahedra`
+///        (the tetrahedron that owns the cell centre)
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress hooks}
+///     \cgalParamType{a class with the member functions of `Hexahedral_extraction_visitor`}
+///     \cgalParamDefault{`Hexahedral_extraction_visitor()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns the counts, defects and seconds
+/// \throws Input_error `(map.source, 0, "not an integer-grid map: ...")` naming the face and the value
+///         when a transition is not a rotation of the 24-group with an integer translation, or a
+///         boundary face is not on an integer plane, within 1e-3 before sanitizing; Input_error for
+///         a non-manifold tetrahedral mesh or inconsistent sizes.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+Hexahedral_extraction_result extract_hexahedra(const Integer_grid_map& map, Hexahedral_mesh_3& hexes,
+                                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  namespace ex = internal::extraction;
+  Hexahedral_extraction_visitor default_visitor;
+  auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  const double tolerance = 1e-3;
+
+  Hexahedral_extraction_result result;
+  typedef std::chrono::steady_clock Clock;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point t0 = start;
+  auto seconds = [&t0]() {
+    const Clock::time_point t1 = Clock::now();
+    const double s = std::chrono::duration<double>(t1 - t0).count();
+    t0 = t1;
+    return s;
+  };
+  auto face_name = [&](std::uint32_t t, int f) {
+    const auto v = ex::sorted_face(map, t, f);
+    return "face (" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
+  };
+  auto str = [](double x) { std::ostringstream ss; ss.precision(6); ss << x; return ss.str(); };
+
+  visitor.start_stage("topology");
+  ex::Map_topology topo;
+  ex::build_map_topology(map, topo);
+  ex::Face_transitions tr;
+  ex::compute_face_transitions(map, topo, tr);
+  if(tr.max_rotation_deviation > tolerance)
+    throw Input_error(map.source, 0, "not an integer-grid map: " + face_name(tr.worst_rotation_tet, tr.worst_rotation_face) +
+                                         ": the two charts differ by no rotation of the 24-group (misfit " +
+                                         str(tr.max_rotation_deviation) + ")");
+  if(tr.max_jump_deviation > tolerance)
+    throw Input_error(map.source, 0, "not an integer-grid map: " + face_name(tr.worst_jump_tet, tr.worst_jump_face) +
+                                         ": the jump is not an integer translation (off by " +
+                                         str(tr.max_jump_deviation) + ")");
+  for(std::uint32_t t = 0; t < map.tetrahedra.size(); ++t) {
+    for(int f = 0; f < 4; ++f) {
+      if(topo.neighbor[t][f] != ex::no_tetrahedron) continue;
+      int axis;
+      double value, deviation;
+      ex::boundary_plane(map, t, f, axis, value, deviation);
+      if(deviation > tolerance)
+        throw Input_error(map.source, 0, "not an integer-grid map: boundary " + face_name(t, f) + " of tetrahedron " +
+                                             std::to_string(t) + " is off the integer plane " + "uvw"[axis] + " = " +
+                                             str(value) + " by " + str(deviation));
+    }
+    const auto& tet = map.tetrahedra[t];
+    if(CGAL::orientation(map.points[tet[0]], map.points[tet[1]], map.points[tet[2]], map.points[tet[3]]) == CGAL::NEGATIVE)
+      ++result.inverted_positions;
+  }
+  result.topology_seconds = seconds();
+  visitor.end_stage("topology", result.topology_seconds);
+
+  visitor.start_stage("sanitize");
+  ex::Sanitized_map sm;
+  ex::sanitize_map(map, topo, tr, sm);
+  result.max_sanitizing_move = sm.max_move;
+  result.singular_snaps = sm.singular_snaps;
+  result.sanitizing_failures = sm.broken_holonomies + sm.boundary_conflicts + sm.inexact_faces;
+  for(const auto& u : sm.parameters) {
+    const CGAL::Orientation o = ex::parameter_orientation(u);
+    if(o == CGAL::NEGATIVE) ++result.inverted_tetrahedra;
+    if(o == CGAL::COPLANAR) ++result.degenerate_tetrahedra;
+  }
+  result.sanitize_seconds = seconds();
+  visitor.end_stage("sanitize", result.sanitize_seconds);
+
+  visitor.start_stage("vertices");
+  ex::Lattice_points lp;
+  ex::extract_lattice_points(map, topo, sm, tr, lp);
+  result.vertices_seconds = seconds();
+  visitor.end_stage("vertices", result.vertices_seconds);
+
+  visitor.start_stage("cells");
+  hexes.clear();
+  ex::Cell_assembly_report cells;
+  ex::assemble_hex_cells(map, topo, sm, tr, lp, hexes.hexahedra, hexes.hexahedron_source_tetrahedra, cells);
+  hexes.points = std::move(lp.positions);
+  hexes.vertex_locations = std::move(lp.locations);
+  hexes.vertex_tags = std::move(lp.tags);
+  result.untraced_corners = cells.missing_corners;
+  result.incomplete_cells = cells.incomplete_cells;
+  result.duplicate_cells = cells.duplicate_cells;
+  result.inconsistent_walks = cells.inconsistent_walks + cells.truncated_walks;
+  result.cells_seconds = seconds();
+  visitor.end_stage("cells", result.cells_seconds);
+
+  result.hexahedra = hexes.hexahedra.size();
+  result.vertices = hexes.points.size();
+  const bool clean = result.inverted_tetrahedra == 0 && result.inverted_positions == 0 && result.untraced_corners == 0 &&
+                     result.incomplete_cells == 0 && result.duplicate_cells == 0 && result.inconsistent_walks == 0 &&
+                     result.sanitizing_failures == 0;
+  result.status = clean ? Hexahedral_extraction_result::OK : Hexahedral_extraction_result::DEFECTS;
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
 }
 
 } // namespace Hexahedral_remeshing

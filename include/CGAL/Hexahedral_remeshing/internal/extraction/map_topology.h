@@ -41,6 +41,8 @@ struct Map_topology
   std::vector<std::uint32_t> edge_owner, vertex_owner;
   // Boundary marks.
   std::vector<char> edge_on_boundary, vertex_on_boundary;
+  // Tetrahedra containing every edge (CSR).
+  std::vector<std::uint32_t> edge_star_begin, edge_star;
   // Incident tetrahedra of every vertex (CSR).
   std::vector<std::uint32_t> vertex_star_begin, vertex_star;
   std::size_t interior_faces = 0, boundary_faces = 0;
@@ -122,6 +124,17 @@ inline void build_map_topology(const Integer_grid_map& map, Map_topology& topo)
       ++j;
     }
     i = j;
+  }
+
+  topo.edge_star_begin.assign(topo.edges.size() + 1, 0);
+  for(std::uint32_t t = 0; t < nt; ++t)
+    for(int e = 0; e < 6; ++e) ++topo.edge_star_begin[topo.tetrahedron_edges[t][e] + 1];
+  for(std::size_t e = 0; e < topo.edges.size(); ++e) topo.edge_star_begin[e + 1] += topo.edge_star_begin[e];
+  topo.edge_star.resize(6 * nt);
+  {
+    std::vector<std::uint32_t> fill(topo.edge_star_begin.begin(), topo.edge_star_begin.end() - 1);
+    for(std::uint32_t t = 0; t < nt; ++t)
+      for(int e = 0; e < 6; ++e) topo.edge_star[fill[topo.tetrahedron_edges[t][e]]++] = t;
   }
 
   topo.vertex_owner.assign(nv, no_tetrahedron);
