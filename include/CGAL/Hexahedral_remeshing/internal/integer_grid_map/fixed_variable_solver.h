@@ -1,0 +1,89 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_FIXED_VARIABLE_SOLVER_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_FIXED_VARIABLE_SOLVER_H
+
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// Minimizes y^T H y - 2 rhs^T y with some variables fixed to given values, with CHOLMOD's
+// supernodal Cholesky. A fixed variable keeps its entries in the matrix: its row and column are set
+// to the identity (the other entries to 0, not removed) and its column times its value moves to the
+// right side, so the sparsity pattern never changes and the symbolic analysis is done once; every
+// later solve is a numeric factorization only (algorithms.md §4 "Mixed-integer solve").
+// H is given with both triangles (CHOLMOD reads the lower one).
+class Fixed_variable_solver
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  // Replaces the system; keeps the symbolic analysis if the pattern is the same.
+  void set_system(const Matrix& H, const Eigen::VectorXd& rhs)
+  {
+    const bool same = m_H.rows() == H.rows() && m_H.nonZeros() == H.nonZeros() &&
+                      std::equal(H.outerIndexPtr(), H.outerIndexPtr() + H.outerSize() + 1, m_H.outerIndexPtr()) &&
+                      std::equal(H.innerIndexPtr(), H.innerIndexPtr() + H.nonZeros(), m_H.innerIndexPtr());
+    if(!same) m_analysed = false;
+    m_H = H;
+    m_H.makeCompressed();
+    m_rhs = rhs;
+    if(m_fixed.size() != std::size_t(H.rows())) {
+      m_fixed.assign(std::size_t(H.rows()), 0);
+      m_values.setZero(H.rows());
+    }
+  }
+
+  void fix(Eigen::Index i, double value) { m_fixed[std::size_t(i)] = 1; m_values[i] = value; }
+  bool is_fixed(Eigen::Index i) const { return m_fixed[std::size_t(i)] != 0; }
+  int factorizations() const { return m_factorizations; }
+
+  // Solves; returns false if the factorization failed (matrix not positive definite).
+  bool solve(Eigen::VectorXd& y)
+  {
+    Matrix M = m_H;
+    Eigen::VectorXd r = m_rhs - m_H * m_values; // m_values is 0 at the free variables
+    for(Eigen::Index j = 0; j < M.outerSize(); ++j)
+      for(Matrix::InnerIterator it(M, j); it; ++it)
+        if(m_fixed[std::size_t(it.row())] || m_fixed[std::size_t(j)]) it.valueRef() = it.row() == j ? 1.0 : 0.0;
+    for(Eigen::Index i = 0; i < r.size(); ++i)
+      if(m_fixed[std::size_t(i)]) r[i] = m_values[i];
+    if(!m_analysed) {
+      m_llt = std::make_unique<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> >();
+      m_llt->analyzePattern(M);
+      m_analysed = true;
+    }
+    m_llt->factorize(M);
+    ++m_factorizations;
+    if(m_llt->info() != Eigen::Success) return false;
+    y = m_llt->solve(r);
+    if(m_llt->info() != Eigen::Success) return false;
+    for(Eigen::Index i = 0; i < y.size(); ++i)
+      if(m_fixed[std::size_t(i)]) y[i] = m_values[i];
+    return true;
+  }
+
+private:
+  Matrix m_H;
+  Eigen::VectorXd m_rhs, m_values;
+  std::vector<char> m_fixed;
+  std::unique_ptr<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> > m_llt;
+  bool m_analysed = false;
+  int m_factorizations = 0;
+};
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_FIXED_VARIABLE_SOLVER_H

@@ -1,0 +1,391 @@
+// Tests of the seamless integer-grid map (issue 9). Every map is checked from its parameters alone
+// by an independent checker (exact orientation, transitions recovered from the corner values,
+// integer planes and lines, parameter-space dihedral angles), never from the code's own flags.
+#include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
+#include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include "shared_models.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+
+namespace HR = CGAL::Hexahedral_remeshing;
+typedef HR::Tetrahedral_mesh_3<> Mesh;
+typedef Mesh::Index Index;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
+
+Mesh load(const std::string& file, double max_volume = 0)
+{
+  Mesh m;
+  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::split_boundary_chords(true,
+                                           HR::parameters::maximum_tetrahedron_volume(max_volume)));
+  return m;
+}
+
+Mesh from_off(const std::string& name, const std::string& text, double max_volume)
+{
+  const std::string off = (fs::temp_directory_path() / (name + ".off")).string();
+  {
+    std::ofstream out(off);
+    out.precision(17);
+    out << text;
+  }
+  Mesh m = load(off, max_volume);
+  std::remove(off.c_str());
+  return m;
+}
+
+// Box [0,a]x[0,b]x[0,c] as an OFF surface.
+std::string box_off(double a, double b, double c)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "OFF\n8 12 0\n0 0 0\n" << a << " 0 0\n" << a << " " << b << " 0\n0 " << b << " 0\n"
+     << "0 0 " << c << "\n" << a << " 0 " << c << "\n" << a << " " << b << " " << c << "\n0 " << b << " " << c << "\n"
+     << "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+  return os.str();
+}
+
+// L-shaped prism: the L (0,0),(2,0),(2,1),(1,1),(1,2),(0,2) extruded over z in [0,1].
+std::string l_prism_off()
+{
+  const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  std::ostringstream os;
+  os << "OFF\n12 20 0\n";
+  for(int z = 0; z < 2; ++z)
+    for(const auto& p : P) os << p[0] << " " << p[1] << " " << z << "\n";
+  // bottom (outward -z) and top, as fans of the L split into convex pieces: (0,1,2,3),(0,3,4,5)
+  os << "3 0 2 1\n3 0 3 2\n3 0 4 3\n3 0 5 4\n";
+  os << "3 6 7 8\n3 6 8 9\n3 6 9 10\n3 6 10 11\n";
+  for(int i = 0; i < 6; ++i) {
+    const int j = (i + 1) % 6;
+    os << "3 " << i << " " << j << " " << j + 6 << "\n3 " << i << " " << j + 6 << " " << i + 6 << "\n";
+  }
+  return os.str();
+}
+
+std::string prism_30_60_90_off()
+{
+  const double c = 1.0 / std::sqrt(3.0);
+  std::ostringstream os;
+  os.precision(17);
+  os << "OFF\n6 8 0\n0 0 0\n1 0 0\n0 " << c << " 0\n0 0 1\n1 0 1\n0 " << c << " 1\n"
+     << "3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n";
+  return os.str();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The independent checker: everything from map.parameters and the mesh topology.
+
+struct Check
+{
+  std::size_t inverted = 0, degenerate = 0;
+  std::size_t bad_transitions = 0, interior_faces = 0;
+  std::size_t boundary_faces_off_plane = 0;
+  std::size_t singular_edges_off_line = 0, feature_edges_off_line = 0;
+  std::size_t valence_mismatches = 0, boundary_edges = 0, valence_checked = 0;
+  std::size_t interior_valence_mismatches = 0;
+  double parameter_volume = 0;
+};
+
+bool is_integer(double x) { return x == std::floor(x); }
+
+const std::vector<Eigen::Matrix3d>& rotations()
+{
+  static std::vector<Eigen::Matrix3d> R;
+  if(R.empty()) {
+    const int p[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for(const auto& perm : p)
+      for(int s = 0; s < 8; ++s) {
+        Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+        for(int c = 0; c < 3; ++c) M(perm[c], c) = (s >> c) & 1 ? -1 : 1;
+        if(M.determinant() > 0) R.push_back(M);
+      }
+  }
+  return R;
+}
+
+int corner_of(const HR::Integer_grid_map& map, std::size_t t, std::uint32_t v)
+{
+  for(int c = 0; c < 4; ++c)
+    if(map.tetrahedra[t][c] == v) return c;
+  return -1;
+}
+
+// Dihedral angle of the parameter tetrahedron t at its edge (p, q).
+double parameter_dihedral(const HR::Integer_grid_map& map, std::size_t t, std::uint32_t p, std::uint32_t q)
+{
+  int others[2], k = 0;
+  for(int c = 0; c < 4; ++c)
+    if(map.tetrahedra[t][c] != p && map.tetrahedra[t][c] != q) others[k++] = c;
+  const Eigen::Vector3d& P = map.parameters[t][corner_of(map, t, p)];
+  const Eigen::Vector3d& Q = map.parameters[t][corner_of(map, t, q)];
+  const Eigen::Vector3d e = (Q - P).normalized();
+  Eigen::Vector3d a = map.parameters[t][others[0]] - P, b = map.parameters[t][others[1]] - P;
+  a -= a.dot(e) * e;
+  b -= b.dot(e) * e;
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// `valences`: prescribed valence per edge (boundary), `singularities`: the field's graph.
+Check check_map(const Mesh& m, const HR::Integer_grid_map& map, const std::vector<int>& valences,
+                const HR::Singularity_graph& singularities)
+{
+  Check c;
+  EXPECT_EQ(map.tetrahedra.size(), m.number_of_tetrahedra());
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t) {
+    std::array<K::Point_3, 4> u;
+    for(int i = 0; i < 4; ++i) u[i] = K::Point_3(map.parameters[t][i][0], map.parameters[t][i][1], map.parameters[t][i][2]);
+    const CGAL::Orientation o = CGAL::orientation(u[0], u[1], u[2], u[3]);
+    c.inverted += o == CGAL::NEGATIVE;
+    c.degenerate += o == CGAL::COPLANAR;
+    const Eigen::Vector3d& p0 = map.parameters[t][0];
+    Eigen::Matrix3d D;
+    for(int i = 0; i < 3; ++i) D.col(i) = map.parameters[t][i + 1] - p0;
+    c.parameter_volume += D.determinant() / 6;
+  }
+  for(Index f = 0; f < m.number_of_faces(); ++f) {
+    const auto& ft = m.face_tetrahedra(f);
+    const auto& fv = m.face_vertices(f);
+    if(m.is_boundary_face(f)) {
+      bool on_plane = false;
+      for(int k = 0; k < 3 && !on_plane; ++k) {
+        const double a = map.parameters[ft[0]][corner_of(map, ft[0], fv[0])][k];
+        on_plane = is_integer(a) && map.parameters[ft[0]][corner_of(map, ft[0], fv[1])][k] == a &&
+                   map.parameters[ft[0]][corner_of(map, ft[0], fv[2])][k] == a;
+      }
+      c.boundary_faces_off_plane += !on_plane;
+      continue;
+    }
+    ++c.interior_faces;
+    bool ok = false;
+    for(const Eigen::Matrix3d& R : rotations()) {
+      Eigen::Vector3d tr = Eigen::Vector3d::Zero();
+      bool good = true;
+      for(int i = 0; i < 3 && good; ++i) {
+        const Eigen::Vector3d d = map.parameters[ft[0]][corner_of(map, ft[0], fv[i])] -
+                                  R * map.parameters[ft[1]][corner_of(map, ft[1], fv[i])];
+        if(i == 0) tr = d;
+        good = d == tr && is_integer(d[0]) && is_integer(d[1]) && is_integer(d[2]);
+      }
+      if(good) { ok = true; break; }
+    }
+    c.bad_transitions += !ok;
+  }
+  auto on_integer_line = [&](std::size_t t, std::uint32_t p, std::uint32_t q) {
+    const Eigen::Vector3d& P = map.parameters[t][corner_of(map, t, p)];
+    const Eigen::Vector3d& Q = map.parameters[t][corner_of(map, t, q)];
+    int fixed = 0;
+    for(int k = 0; k < 3; ++k) fixed += (P[k] == Q[k] && is_integer(P[k]));
+    return fixed >= 2;
+  };
+  for(Index e = 0; e < m.number_of_edges(); ++e) {
+    const auto& ev = m.edge_vertices(e);
+    double angle = 0;
+    for(Index t : m.edge_ring(e)) angle += parameter_dihedral(map, t, ev[0], ev[1]);
+    const double k = angle / (CGAL_PI / 2);
+    const bool singular = singularities.edge_valence[e] == 3 || singularities.edge_valence[e] == 5;
+    if(m.is_boundary_edge(e)) {
+      ++c.boundary_edges;
+      if(!valences.empty()) {
+        ++c.valence_checked;
+        c.valence_mismatches += std::abs(k - valences[e]) > 1e-6;
+        if(valences[e] != 2)
+          for(Index t : m.edge_ring(e)) if(!on_integer_line(t, ev[0], ev[1])) { ++c.feature_edges_off_line; break; }
+      }
+    } else {
+      const int expected = singular ? singularities.edge_valence[e] : 4;
+      c.interior_valence_mismatches += std::abs(k - expected) > 1e-6;
+      if(singular)
+        for(Index t : m.edge_ring(e)) if(!on_integer_line(t, ev[0], ev[1])) { ++c.singular_edges_off_line; break; }
+    }
+  }
+  return c;
+}
+
+void expect_valid(const Check& c)
+{
+  EXPECT_EQ(c.inverted, 0u);
+  EXPECT_EQ(c.degenerate, 0u);
+  EXPECT_EQ(c.bad_transitions, 0u);
+  EXPECT_EQ(c.boundary_faces_off_plane, 0u);
+  EXPECT_EQ(c.singular_edges_off_line, 0u);
+  EXPECT_EQ(c.feature_edges_off_line, 0u);
+  EXPECT_EQ(c.valence_mismatches, 0u);
+  EXPECT_EQ(c.interior_valence_mismatches, 0u);
+  EXPECT_EQ(c.valence_checked, c.boundary_edges);
+}
+
+struct Map_run
+{
+  HR::Frame_field_pipeline_result field;
+  HR::Integer_grid_map map;
+  HR::Integer_grid_map_result report;
+  Check check;
+};
+
+template <class NP = CGAL::parameters::Default_named_parameters>
+Map_run run(const Mesh& m, const NP& np = CGAL::parameters::default_values())
+{
+  Map_run r;
+  r.field = HR::compute_frame_field_pipeline(m);
+  r.report = HR::compute_integer_grid_map(m, r.field, r.map, np);
+  r.check = check_map(m, r.map, r.field.valences, r.field.singularities);
+  return r;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+TEST(IntegerGridMapParts, SignedUnionFind)
+{
+  HR::internal::Signed_union_find uf(4);
+  EXPECT_TRUE(uf.unite(0, 1, -1));
+  EXPECT_TRUE(uf.unite(1, 2, 1));
+  EXPECT_EQ(uf.find(2).first, 0u);
+  EXPECT_EQ(uf.find(2).second, -1); // x2 = x1 = -x0
+  EXPECT_TRUE(uf.unite(2, 0, -1));  // consistent
+  EXPECT_FALSE(uf.contradicted(0));
+  EXPECT_FALSE(uf.unite(2, 0, 1)); // x2 = x0 contradicts x2 = -x0
+  EXPECT_TRUE(uf.contradicted(1));
+  EXPECT_FALSE(uf.contradicted(3));
+}
+
+TEST(IntegerGridMapParts, EliminationKeepsIntegersInteger)
+{
+  HR::internal::Constraint_elimination el;
+  typedef HR::internal::Constraint_elimination::Term T;
+  const auto a = el.add_variable(false), b = el.add_variable(false), t1 = el.add_variable(true), t2 = el.add_variable(true);
+  // a - b - t1 = 0, a - b - t2 = 0  =>  t2 = t1 (the jumps of one seam collapse to one integer)
+  EXPECT_EQ(el.add_row({T{a, 1}, T{b, -1}, T{t1, -1}}, 0), HR::internal::Constraint_elimination::ELIMINATED);
+  EXPECT_EQ(el.add_row({T{a, 1}, T{b, -1}, T{t2, -1}}, 0), HR::internal::Constraint_elimination::ELIMINATED);
+  EXPECT_FALSE(el.is_free(a));
+  ASSERT_NE(el.is_free(t1), el.is_free(t2)); // one jump left
+  const auto kept = el.is_free(t1) ? t1 : t2, gone = el.is_free(t1) ? t2 : t1;
+  const auto& e = el.expand(gone);
+  ASSERT_EQ(e.terms.size(), 1u);
+  EXPECT_EQ(e.terms[0].var, kept);
+  EXPECT_EQ(e.terms[0].coef, 1.0);
+  EXPECT_EQ(e.constant, 0.0);
+  // the same row again is redundant; a contradicting constant is inconsistent
+  EXPECT_EQ(el.add_row({T{a, 1}, T{b, -1}, T{t1, -1}}, 0), HR::internal::Constraint_elimination::REDUNDANT);
+  EXPECT_EQ(el.add_row({T{t1, 1}, T{t2, -1}}, 1), HR::internal::Constraint_elimination::INCONSISTENT);
+}
+
+TEST(IntegerGridMap, CubeHasNCubedUnitCells)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.002);
+  for(int N : {2, 3}) {
+    SCOPED_TRACE(N);
+    const Map_run r = run(m, HR::parameters::target_edge_length(1.0 / N));
+    EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
+    EXPECT_EQ(r.report.cut_faces, 0u); // no singularity: everything glued
+    EXPECT_EQ(r.report.target_edge_length, 1.0 / N);
+    expect_valid(r.check);
+    EXPECT_NEAR(r.check.parameter_volume, double(N * N * N), 1e-9);
+    EXPECT_EQ(r.map.transitions.size(), r.check.interior_faces);
+  }
+}
+
+TEST(IntegerGridMap, BoxHasTheProductOfItsSides)
+{
+  const Mesh m = from_off("hexrem_igm_box", box_off(2, 1, 0.5), 0.002);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.25));
+  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
+  expect_valid(r.check);
+  EXPECT_NEAR(r.check.parameter_volume, 8.0 * 4.0 * 2.0, 1e-9);
+}
+
+TEST(IntegerGridMap, BadInput)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.01);
+  const auto field = HR::compute_frame_field_pipeline(m);
+  HR::Integer_grid_map map;
+  EXPECT_THROW(HR::compute_integer_grid_map(m, field, map, HR::parameters::target_edge_length(0.0)), HR::Input_error);
+  EXPECT_THROW(HR::compute_integer_grid_map(m, field, map, HR::parameters::target_edge_length(-1.0)), HR::Input_error);
+  EXPECT_THROW(HR::compute_integer_grid_map(m, field, map,
+                                            HR::parameters::target_edge_length(std::numeric_limits<double>::quiet_NaN())),
+               HR::Input_error);
+  std::vector<Eigen::Matrix3d> frames(field.frames.begin(), field.frames.end() - 1);
+  EXPECT_THROW(HR::compute_integer_grid_map(m, frames, field.matchings, field.singularities, map), HR::Input_error);
+  const Mesh other = load(example_data + "/cube.off", 0.005);
+  EXPECT_THROW(HR::compute_integer_grid_map(other, field, map), HR::Input_error);
+  try {
+    HR::compute_integer_grid_map(m, field, map, HR::parameters::target_edge_length(-1.0));
+  } catch(const HR::Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("target_edge_length"), std::string::npos);
+  }
+}
+
+TEST(IntegerGridMap, LPrismConcaveEdgeHasValenceThree)
+{
+  const Mesh m = from_off("hexrem_igm_l_prism", l_prism_off(), 0.005);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.25));
+  std::size_t concave = 0;
+  for(Index e : m.boundary_edges()) concave += r.field.valences[e] == 3;
+  EXPECT_GT(concave, 0u);
+  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
+  expect_valid(r.check);
+  EXPECT_NEAR(r.check.parameter_volume, 3.0 * 4 * 4 * 4, 1e-9);
+}
+
+TEST(IntegerGridMap, DISABLED_PrismWithOneValenceThreeCurve)
+{
+  const Mesh m = from_off("hexrem_igm_prism", prism_30_60_90_off(), 0.0005);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.2));
+  ASSERT_EQ(r.field.singularities.number_of_curves(3), 1u);
+  std::printf("prism: status %d inverted %zu degenerate %zu jogs %zu/%zu cut %zu int %zu rounds %d stiff %d\n",
+              int(r.report.status), r.check.inverted, r.check.degenerate, r.report.jogs, r.report.degenerate_jogs,
+              r.report.cut_faces, r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds);
+  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
+  expect_valid(r.check);
+}
+
+TEST(IntegerGridMap, DISABLED_CylinderWithFourValenceThreeCurves)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.002);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.25));
+  EXPECT_EQ(r.field.singularities.number_of_curves(3), 4u);
+  std::printf("cylinder: status %d inverted %zu degenerate %zu jogs %zu/%zu cut %zu int %zu rounds %d stiff %d\n",
+              int(r.report.status), r.check.inverted, r.check.degenerate, r.report.jogs, r.report.degenerate_jogs,
+              r.report.cut_faces, r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds);
+  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
+  expect_valid(r.check);
+}
+
+TEST(IntegerGridMap, DISABLED_AcuteEdgeHasValenceOne)
+{
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  const Map_run r = run(m);
+  std::size_t acute = 0;
+  for(Index e : m.boundary_edges())
+    if(HR::boundary_edge_dihedral_class(m, e) == 0) {
+      ++acute;
+      EXPECT_EQ(r.field.valences[e], 1);
+    }
+  EXPECT_GE(acute, 8u);
+  std::printf("acute: status %d inverted %zu degenerate %zu jogs %zu/%zu cut %zu int %zu rounds %d stiff %d disagree %zu h %g\n",
+              int(r.report.status), r.check.inverted, r.check.degenerate, r.report.jogs, r.report.degenerate_jogs,
+              r.report.cut_faces, r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
+              r.report.disagreeing_faces, r.report.target_edge_length);
+  expect_valid(r.check);
+}
