@@ -275,3 +275,96 @@ TEST(Extraction, GeneratedHexMeshesGiveBackKCubedHexesPerHex)
     }
   }
 }
+
+TEST(Extraction, SharedMapsExactCountsAndValidMeshes)
+{
+  if(!fs::exists(igm_data + "minimal.hexex")) GTEST_SKIP() << "no shared data";
+  struct Case { const char* name; std::size_t hexes; };
+  const Case cases[] = {{"minimal", 1}, {"sphere", 216}, {"fancy_ring_q", 1220}, {"hand_q", 956}};
+  for(const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const HR::Integer_grid_map map = read(igm_data + c.name + ".hexex");
+    HR::Hexahedral_mesh_3 hexes;
+    const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes);
+    const Hex_measures m = measure(hexes);
+    std::printf("%-14s hexes %zu/%zu vertices %zu minSJ %.4f meanSJ %.4f status %d degenerate %zu inverted %zu "
+                "inverted-in-space %zu untraced %zu incomplete %zu duplicate %zu seconds %.4f\n",
+                c.name, c.hexes, r.hexahedra, r.vertices, m.min_sj, m.mean_sj, int(r.status), r.degenerate_tetrahedra,
+                r.inverted_tetrahedra, r.inverted_positions, r.untraced_corners, r.incomplete_cells, r.duplicate_cells,
+                r.seconds);
+    EXPECT_EQ(hexes.hexahedra.size(), c.hexes);
+    EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::OK);
+    EXPECT_GT(m.min_sj, 0.);
+    EXPECT_EQ(m.nonconforming_quads, 0u);
+    EXPECT_EQ(m.unused_vertices, 0u);
+    EXPECT_EQ(m.bad_boundary_tags, 0u);
+  }
+}
+
+TEST(Extraction, RockerarmDefectsAreReported)
+{
+  if(!fs::exists(igm_data + "rockerarm_q.hexex")) GTEST_SKIP() << "no shared data";
+  const HR::Integer_grid_map map = read(igm_data + "rockerarm_q.hexex");
+  HR::Hexahedral_mesh_3 hexes;
+  const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes);
+  const Hex_measures m = measure(hexes);
+  std::printf("%-14s hexes %zu vertices %zu minSJ %.4f meanSJ %.4f status %d inverted-in-space %zu untraced %zu "
+              "incomplete %zu seconds %.4f\n", "rockerarm_q", r.hexahedra, r.vertices, m.min_sj, m.mean_sj,
+              int(r.status), r.inverted_positions, r.untraced_corners, r.incomplete_cells, r.seconds);
+  EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::DEFECTS);
+  EXPECT_EQ(r.inverted_positions, 5u);
+  EXPECT_GT(hexes.hexahedra.size(), 0u);
+  EXPECT_EQ(m.nonconforming_quads, 0u); // cells are complete, never broken
+}
+
+TEST(Extraction, MapsThatAreNotIntegerGridAreRefused)
+{
+  auto refusal = [](const HR::Integer_grid_map& map) -> std::string {
+    HR::Hexahedral_mesh_3 hexes;
+    try {
+      HR::extract_hexahedra(map, hexes);
+    } catch(const HR::Input_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string jump = refusal(read(hexex_data + "non_integer_jump.hexex"));
+  EXPECT_NE(jump.find("not an integer-grid map"), std::string::npos) << jump;
+  EXPECT_NE(jump.find("face ("), std::string::npos) << jump;
+  EXPECT_NE(jump.find("0.25"), std::string::npos) << jump;
+  EXPECT_NE(jump.find("non_integer_jump.hexex"), std::string::npos) << jump;
+  // a boundary face off its integer plane (the jump is fine)
+  HR::Integer_grid_map map = read(hexex_data + "two_cubes.hexex");
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t)
+    for(int k = 0; k < 4; ++k)
+      if(map.tetrahedra[t][k] == 0) map.parameters[t][k][2] += 0.01; // vertex 0 lies on 3 boundary planes
+  const std::string plane = refusal(map);
+  EXPECT_NE(plane.find("not an integer-grid map: boundary face"), std::string::npos) << plane;
+  if(fs::exists(igm_data + "fancy_ring.hexex")) {
+    const std::string ring = refusal(read(igm_data + "fancy_ring.hexex"));
+    EXPECT_NE(ring.find("not an integer-grid map"), std::string::npos) << ring;
+    std::printf("fancy_ring refused: %s\n", ring.c_str());
+  }
+}
+
+namespace {
+struct Recording_visitor : HR::Hexahedral_extraction_visitor
+{
+  std::vector<std::string> stages;
+  void end_stage(const std::string& s, double seconds)
+  {
+    stages.push_back(s);
+    EXPECT_GE(seconds, 0.);
+  }
+};
+} // namespace
+
+TEST(Extraction, VisitorSeesEveryStep)
+{
+  const HR::Integer_grid_map map = read(hexex_data + "two_cubes.hexex");
+  HR::Hexahedral_mesh_3 hexes;
+  Recording_visitor v;
+  const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes, CGAL::parameters::visitor(std::ref(v)));
+  EXPECT_EQ(r.hexahedra, 2u);
+  EXPECT_EQ(v.stages, (std::vector<std::string>{"topology", "sanitize", "vertices", "cells"}));
+}
