@@ -170,5 +170,9 @@ mkdir "$tmp/e/cc.perm"
 expect_error 5 "cc.perm: cannot rename" frames "$n13c" --no-realign --quiet "${outputs[@]}"
 [ "$(ls -A "$tmp/e")" = "cc.perm" ] || fail "a failed output left a partial set of outputs: $(ls "$tmp/e")"
 
+# a part without acute edges: the summary says so instead of leaving the count empty
+"$hexmesh" frames "$data/cube.off" --no-realign > "$tmp/out" 2> "$tmp/err" || fail "frames on cube.off exit code $?"
+grep -q "edges below 45 degrees: none$" "$tmp/out" || fail "frames summary on the cube: $(grep 'below 45' "$tmp/out")"
+
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"

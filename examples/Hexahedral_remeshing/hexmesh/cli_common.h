@@ -203,6 +203,15 @@ private:
   std::chrono::steady_clock::time_point m_start, m_last_note;
 };
 
+// "k: n, k: n" of a valence histogram, "none" if empty.
+inline std::string valence_list(const std::map<int, std::size_t>& h)
+{
+  std::ostringstream s;
+  bool first = true;
+  for(const auto& kv : h) { s << (first ? "" : ", ") << kv.first << ": " << kv.second; first = false; }
+  return first ? std::string("none") : s.str();
+}
+
 // The --heuristic option (default low_angle).
 inline CGAL::Hexahedral_remeshing::Valence_heuristic heuristic_option(const Arguments& args)
 {

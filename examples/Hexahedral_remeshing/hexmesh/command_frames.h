@@ -58,18 +58,21 @@ struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipelin
   Progress& progress;
 };
 
-inline int command_frames(const Arguments& args)
+// The options shared by the commands that run the frame-field pipeline (frames, parametrize, remesh).
+struct Frame_field_options
 {
-  namespace HR = CGAL::Hexahedral_remeshing;
-  namespace HP = CGAL::Hexahedral_remeshing::parameters;
-  typedef Mesh::Index Index;
+  CGAL::Hexahedral_remeshing::Valence_heuristic heuristic;
+  bool baseline = false, realign = true, quiet = false;
+};
 
-  // Usage first, then the outputs, then the inputs: every error before any computation.
-  if(args.positional().size() != 1) throw Usage_error("frames expects one input file");
-  const std::string& in = args.positional()[0];
-  const HR::Valence_heuristic heuristic = heuristic_option(args);
-  const bool baseline = args.has("baseline"), realign = !args.has("no-realign"), quiet = args.has("quiet");
-  if(baseline && (args.has("heuristic") || args.has("valences")))
+inline Frame_field_options frame_field_options(const Arguments& args)
+{
+  Frame_field_options o;
+  o.heuristic = heuristic_option(args);
+  o.baseline = args.has("baseline");
+  o.realign = !args.has("no-realign");
+  o.quiet = args.has("quiet");
+  if(o.baseline && (args.has("heuristic") || args.has("valences")))
     throw Usage_error("--baseline aligns the field with the normals: it takes no --heuristic nor --valences");
   if(args.has("threads")) {
     const int threads = args.integer("threads", 1, 1, 1024);
@@ -79,6 +82,51 @@ inline int command_frames(const Arguments& args)
     (void)threads;
 #endif
   }
+  return o;
+}
+
+// Reads the input (chords split unless --no-chord-split) and the --valences file; returns the seconds.
+inline double read_frame_field_input(const Arguments& args, const std::string& in, Mesh& mesh,
+                                     std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress)
+{
+  progress.start("reading " + in);
+  read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
+  if(args.has("valences")) prescribed = CGAL::Hexahedral_remeshing::IO::read_edge_valences(args.value("valences"), mesh);
+  return progress.finish();
+}
+
+// Runs the frame-field pipeline with progress; an impossible prescription stays an Input_error (exit 3),
+// any other failure becomes a Stage_error (exit 4).
+inline CGAL::Hexahedral_remeshing::Frame_field_pipeline_result
+run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, const Mesh& mesh,
+                         const std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  Frames_progress_visitor visitor(progress);
+  try {
+    return HR::compute_frame_field_pipeline(
+      mesh, HP::valence_heuristic(o.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
+                                  HP::baseline(o.baseline, HP::realignment(o.realign)))).visitor(std::ref(visitor)));
+  } catch(const HR::Input_error&) {
+    throw;
+  } catch(const std::exception& e) {
+    throw Stage_error(std::string("frame-field pipeline on ") + in + ": " + e.what());
+  }
+}
+
+inline int command_frames(const Arguments& args)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  typedef Mesh::Index Index;
+
+  // Usage first, then the outputs, then the inputs: every error before any computation.
+  if(args.positional().size() != 1) throw Usage_error("frames expects one input file");
+  const std::string& in = args.positional()[0];
+  const Frame_field_options options = frame_field_options(args);
+  const HR::Valence_heuristic heuristic = options.heuristic;
+  const bool baseline = options.baseline, quiet = options.quiet;
   Output_files outputs;
   const std::string cubecover = args.value("cubecover");
   for(const char* o : {"frames", "singularities", "valences-out", "json"})
@@ -89,24 +137,10 @@ inline int command_frames(const Arguments& args)
   }
 
   Progress progress(quiet);
-  progress.start("reading " + in);
   Mesh mesh;
-  read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
   std::vector<std::pair<Index, int> > prescribed;
-  if(args.has("valences")) prescribed = HR::IO::read_edge_valences(args.value("valences"), mesh);
-  const double read_seconds = progress.finish();
-
-  Frames_progress_visitor visitor(progress);
-  HR::Frame_field_pipeline_result r;
-  try {
-    r = HR::compute_frame_field_pipeline(
-      mesh, HP::valence_heuristic(heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
-                                  HP::baseline(baseline, HP::realignment(realign)))).visitor(std::ref(visitor)));
-  } catch(const HR::Input_error&) {
-    throw; // an impossible prescription: exit 3
-  } catch(const std::exception& e) {
-    throw Stage_error(std::string("frame-field pipeline on ") + in + ": " + e.what());
-  }
+  const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
+  const HR::Frame_field_pipeline_result r = run_frame_field_pipeline(options, in, mesh, prescribed, progress);
   const HR::Mesh_statistics statistics = HR::compute_mesh_statistics(mesh);
 
   // Achieved valence by exact dihedral class: row = class 0..4, column = achieved valence 0..4.
@@ -222,7 +256,7 @@ inline int command_frames(const Arguments& args)
       bool first = true;
       for(std::size_t k = 0; k < h.size(); ++k)
         if(h[k] > 0) { s << (first ? "" : ", ") << "k=" << k << ": " << h[k]; first = false; }
-      return s.str();
+      return first ? std::string("none") : s.str();
     };
     std::cout << in << ": frame field " << (baseline ? "aligned with the normals (baseline)" : "with prescribed boundary valences")
               << "\n"
