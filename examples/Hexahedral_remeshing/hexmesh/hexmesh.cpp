@@ -7,6 +7,8 @@
 #include "command_info.h"
 #include "command_constraints.h"
 #include "command_frames.h"
+#include "command_extract.h"
+#include "command_parametrize.h"
 
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
@@ -49,6 +51,24 @@ const char* usage =
   "                            threads; --quiet: no summary nor progress (warnings remain).\n"
   "                            On a busy machine, OMP_WAIT_POLICY=PASSIVE (environment) avoids\n"
   "                            OpenMP threads spinning while they wait.\n"
+  "  parametrize IN --hexex OUT.hexex [--vtk OUT.vtk] [--json FILE] [--valences-out FILE]\n"
+  "         [--target-edge-length H] [--heuristic NAME] [--valences FILE] [--baseline]\n"
+  "         [--no-chord-split] [--threads N] [--quiet]\n"
+  "                            the frame-field pipeline (as for frames), then the seamless\n"
+  "                            integer-grid map (cut, integer constraints, greedy rounding,\n"
+  "                            stiffening): --hexex writes it in libHexEx's format (input of\n"
+  "                            extract), --vtk as exploded tetrahedra with point data uvw;\n"
+  "                            H is the hex edge length in model units (default: about 2000\n"
+  "                            hexahedra). Prints the map status, inverted/degenerate\n"
+  "                            tetrahedra, edge valences of the map and seconds per step.\n"
+  "  extract IN.hexex --out OUT.mesh|OUT.vtk [--json FILE] [--quiet]\n"
+  "                            hexahedra of an integer-grid map (libHexEx's .hexex: vertices, then\n"
+  "                            tets with the parameters of their corners in their own chart): reads,\n"
+  "                            extracts (HexEx-style), checks (conformity, scaled Jacobian, irregular\n"
+  "                            edges) and writes the hex mesh (.mesh for HexaLab/gmsh, .vtk for\n"
+  "                            ParaView). A map that is not integer-grid (jumps not in the 24\n"
+  "                            rotations with integer shifts, boundary off the integer planes) is\n"
+  "                            refused (exit 3); cells a broken map cannot complete are left out.\n"
   "\n"
   "Inputs: .vtk (VTK legacy ASCII unstructured grid, gmsh style), .mesh (MEDIT),\n"
   "        .off .obj .stl .ply (closed surfaces, tetrahedralized with TetGen).\n"
@@ -75,6 +95,12 @@ int main(int argc, char** argv)
     if(command == "frames")
       return hexmesh::command_frames(
         hexmesh::Arguments(argc, argv, 2, hexmesh::frames_options(), hexmesh::frames_flags()));
+    if(command == "parametrize")
+      return hexmesh::command_parametrize(
+        hexmesh::Arguments(argc, argv, 2, hexmesh::parametrize_options(), hexmesh::parametrize_flags()));
+    if(command == "extract")
+      return hexmesh::command_extract(
+        hexmesh::Arguments(argc, argv, 2, hexmesh::extract_options(), hexmesh::extract_flags()));
     throw hexmesh::Usage_error("unknown command '" + command + "'");
   } catch(const hexmesh::Usage_error& e) {
     std::cerr << "hexmesh: " << e.what() << " (see hexmesh --help)\n";

@@ -1,0 +1,232 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+//
+// hexmesh parametrize IN --hexex OUT.hexex [--vtk OUT.vtk] [--json REPORT] [--valences-out F]
+//                        [--target-edge-length H] [--heuristic NAME] [--valences F] [--baseline] [--quiet]
+// The frame-field pipeline, then the seamless integer-grid map (paper Sec. 3.4).
+#ifndef HEXMESH_COMMAND_PARAMETRIZE_H
+#define HEXMESH_COMMAND_PARAMETRIZE_H
+
+#include "cli_common.h"
+#include "command_frames.h"
+
+#include <CGAL/Hexahedral_remeshing/IO/edge_valences.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_HexEx.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
+#include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
+
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace hexmesh {
+
+inline std::vector<std::string> parametrize_options()
+{
+  std::vector<std::string> options = input_options();
+  for(const char* o : {"heuristic", "valences", "hexex", "vtk", "json", "valences-out", "target-edge-length", "threads"})
+    options.push_back(o);
+  return options;
+}
+
+inline std::vector<std::string> parametrize_flags() { return {"baseline", "no-chord-split", "quiet"}; }
+
+inline const char* integer_grid_map_status_name(CGAL::Hexahedral_remeshing::Integer_grid_map_status s)
+{
+  typedef CGAL::Hexahedral_remeshing::Integer_grid_map_status S;
+  switch(s) {
+    case S::OK: return "OK";
+    case S::DEGENERATE_TETRAHEDRA: return "DEGENERATE_TETRAHEDRA";
+    case S::INVERTED_TETRAHEDRA: return "INVERTED_TETRAHEDRA";
+    case S::NON_MESHABLE_SINGULARITIES: return "NON_MESHABLE_SINGULARITIES";
+    case S::INCONSISTENT_MATCHINGS: return "INCONSISTENT_MATCHINGS";
+    case S::SOLVER_FAILURE: return "SOLVER_FAILURE";
+  }
+  return "UNKNOWN";
+}
+
+// The --target-edge-length option: a positive number of model units, 0 when absent (default size).
+inline double target_edge_length_option(const Arguments& args)
+{
+  const double h = args.number("target-edge-length", 0.);
+  if(args.has("target-edge-length") && !(h > 0))
+    throw Usage_error("option --target-edge-length expects a positive length in model units");
+  return h;
+}
+
+struct Map_progress_visitor : CGAL::Hexahedral_remeshing::Integer_grid_map_visitor
+{
+  explicit Map_progress_visitor(Progress& p) : progress(p) {}
+  void start_stage(const std::string& stage) { progress.start("integer-grid map: " + stage); }
+  void end_stage(const std::string&, double) { progress.finish(); }
+  Progress& progress;
+};
+
+// Runs the map with progress; failures other than bad inputs become Stage_errors (exit 4).
+inline CGAL::Hexahedral_remeshing::Integer_grid_map_result
+run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& f,
+                     double target_edge_length, CGAL::Hexahedral_remeshing::Integer_grid_map& map, Progress& progress)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  Map_progress_visitor visitor(progress);
+  try {
+    if(target_edge_length > 0)
+      return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
+                                          HP::target_edge_length(target_edge_length).visitor(std::ref(visitor)));
+    return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
+                                        CGAL::parameters::visitor(std::ref(visitor)));
+  } catch(const HR::Input_error&) {
+    throw;
+  } catch(const std::exception& e) {
+    throw Stage_error(std::string("integer-grid map of ") + in + ": " + e.what());
+  }
+}
+
+// The map block of the JSON reports of parametrize and remesh.
+inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
+                                 const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
+{
+  json.begin("integer_grid_map")
+      .value("status", integer_grid_map_status_name(m.status))
+      .value("target_edge_length", m.target_edge_length)
+      .value("inverted_tetrahedra", m.inverted_tetrahedra)
+      .value("degenerate_tetrahedra", m.degenerate_tetrahedra)
+      .value("min_relative_jacobian", m.min_relative_jacobian)
+      .value("cut_faces", m.cut_faces)
+      .value("variables", m.variables)
+      .value("integer_variables", m.integer_variables)
+      .value("rounding_rounds", m.rounding_rounds)
+      .value("stiffening_rounds", m.stiffening_rounds)
+      .value("untangling_ran", m.untangling_ran)
+      .value("disagreeing_faces", m.disagreeing_faces)
+      .value("jogs", m.jogs)
+      .value("degenerate_jogs", m.degenerate_jogs)
+      .value("defects", m.defects.size())
+      .value("transition_error", m.transition_error)
+      .value("seconds", m.seconds);
+  std::vector<std::vector<long long> > interior, boundary;
+  for(const auto& kv : c.interior_edge_valences) interior.push_back({kv.first, (long long)kv.second});
+  for(const auto& kv : c.boundary_edge_valences) boundary.push_back({kv.first, (long long)kv.second});
+  json.begin("check")
+      .value("integer_grid", c.is_integer_grid())
+      .value("inverted_tetrahedra", c.inverted_tetrahedra)
+      .value("degenerate_tetrahedra", c.degenerate_tetrahedra)
+      .value("max_jump_deviation", c.max_jump_deviation)
+      .value("max_boundary_deviation", c.max_boundary_deviation)
+      .matrix("interior_edge_valences", interior)
+      .matrix("boundary_edge_valences", boundary)
+      .end();
+  json.end();
+}
+
+inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
+                                   const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
+{
+  out << "  integer-grid map    " << integer_grid_map_status_name(m.status) << ": hex edge " << m.target_edge_length
+      << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, min det J "
+      << std::setprecision(3) << m.min_relative_jacobian << std::defaultfloat << " of the target; " << m.integer_variables
+      << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
+      << "  map check           " << (c.is_integer_grid() ? "integer-grid" : "NOT integer-grid") << ", interior edges by valence "
+      << valence_list(c.interior_edge_valences) << "; boundary edges by valence " << valence_list(c.boundary_edge_valences)
+      << "\n"
+      << "  map defects         " << m.jogs << " singular jogs (" << m.degenerate_jogs << " degenerate), " << m.disagreeing_faces
+      << " faces where frames and matchings disagree, " << m.defects.size() << " non-meshable singularities\n";
+}
+
+inline int command_parametrize(const Arguments& args)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  typedef Mesh::Index Index;
+  if(args.positional().size() != 1) throw Usage_error("parametrize expects one input file");
+  const std::string& in = args.positional()[0];
+  const Frame_field_options options = frame_field_options(args);
+  if(!args.has("hexex")) throw Usage_error("parametrize needs --hexex OUT.hexex");
+  const double target = target_edge_length_option(args);
+  Output_files outputs;
+  for(const char* o : {"hexex", "vtk", "json", "valences-out"})
+    if(args.has(o)) outputs.add(args.value(o));
+
+  Progress progress(options.quiet);
+  Mesh mesh;
+  std::vector<std::pair<Index, int> > prescribed;
+  const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
+  const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress);
+  HR::Integer_grid_map map;
+  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress);
+  progress.start("checking the map");
+  const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
+  progress.finish();
+
+  progress.start("writing the outputs");
+  const std::string hexex = args.value("hexex");
+  outputs.write({hexex}, [&] { HR::IO::write_HexEx(hexex, map); });
+  if(args.has("vtk")) {
+    const std::string v = args.value("vtk");
+    outputs.write({v}, [&] { HR::IO::write_VTK_integer_grid_map(v, map); });
+  }
+  if(args.has("valences-out")) {
+    const std::string v = args.value("valences-out");
+    outputs.write({v}, [&] { HR::IO::write_edge_valences(v, mesh, f.valences); });
+  }
+  if(args.has("json")) {
+    Json json;
+    json.begin().value("input", in).value("baseline", f.baseline).value("tetrahedra", mesh.number_of_tetrahedra());
+    json.begin("singularities")
+        .value("valence3_curves", f.singularities.number_of_curves(3))
+        .value("valence5_curves", f.singularities.number_of_curves(5))
+        .value("improper_edges", f.singularities.improper_edges)
+        .end();
+    json.begin("boundary_valences")
+        .value("total", f.boundary_valences.total)
+        .value("matched", f.boundary_valences.matched)
+        .value("mismatched", f.boundary_valences.mismatched)
+        .end();
+    add_integer_grid_map(json, m, check);
+    json.begin("seconds")
+        .value("read", read_seconds)
+        .value("frame_field", f.seconds)
+        .value("cut", m.cut_seconds)
+        .value("reduction", m.reduction_seconds)
+        .value("elimination", m.elimination_seconds)
+        .value("rounding", m.rounding_seconds)
+        .value("stiffening", m.stiffening_seconds)
+        .value("untangling", m.untangling_seconds)
+        .value("sanitize", m.sanitize_seconds)
+        .value("map", m.seconds)
+        .end();
+    json.end();
+    const std::string j = args.value("json");
+    outputs.write({j}, [&] { json.write(j); });
+  }
+  progress.finish();
+
+  if(!options.quiet) {
+    std::cout << in << ": integer-grid map of " << mesh.number_of_tetrahedra() << " tetrahedra\n"
+              << "  frame field         " << f.singularities.number_of_curves(3) << " valence-3 and "
+              << f.singularities.number_of_curves(5) << " valence-5 singular curves, " << f.singularities.improper_edges
+              << " improper edges; boundary valences " << f.boundary_valences.matched << "/" << f.boundary_valences.total
+              << " as prescribed\n";
+    print_integer_grid_map(std::cout, m, check);
+    std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", frame field "
+              << f.seconds << ", map " << m.seconds << " (cut " << m.cut_seconds << ", reduction " << m.reduction_seconds
+              << ", elimination " << m.elimination_seconds << ", rounding " << m.rounding_seconds << ", stiffening "
+              << m.stiffening_seconds << ", untangling " << m.untangling_seconds << ", sanitize " << m.sanitize_seconds
+              << ")\n" << std::defaultfloat
+              << "  map                 " << hexex << " (hexmesh extract " << hexex << " --out OUT.mesh)\n";
+    if(args.has("vtk")) std::cout << "  ParaView            " << args.value("vtk") << " (exploded tetrahedra, point data uvw)\n";
+    if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
+  }
+  if(m.status != HR::Integer_grid_map_status::OK)
+    std::cerr << "hexmesh: warning: " << in << ": integer-grid map status " << integer_grid_map_status_name(m.status)
+              << " (" << m.inverted_tetrahedra << " inverted, " << m.degenerate_tetrahedra << " degenerate tetrahedra, "
+              << m.defects.size() << " non-meshable singularities)\n";
+  return EXIT_OK;
+}
+
+} // namespace hexmesh
+
+#endif // HEXMESH_COMMAND_PARAMETRIZE_H
