@@ -368,3 +368,47 @@ TEST(Extraction, VisitorSeesEveryStep)
   EXPECT_EQ(r.hexahedra, 2u);
   EXPECT_EQ(v.stages, (std::vector<std::string>{"topology", "sanitize", "vertices", "cells"}));
 }
+
+TEST(Extraction, FoldedMapsDoNotCrashAndEmitOnlyCompleteCells)
+{
+  // Move the cell-centre vertex of every hex (its 24 tets share the hex's chart, so the map stays
+  // seamless) by up to 0.9 k: tets invert and the map folds.
+  for(int k = 1; k <= 2; ++k) {
+    const auto g = HR::test::make_grid(3, 3, 3);
+    HR::Integer_grid_map map = HR::test::map_from_hex_mesh(g.mesh, k, 11, false);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-0.9 * k, 0.9 * k);
+    const std::uint32_t first_centre = std::uint32_t(map.points.size() - g.mesh.hexahedra.size());
+    std::map<std::uint32_t, Eigen::Vector3d> moves;
+    for(std::uint32_t v = first_centre; v < map.points.size(); ++v)
+      moves[v] = Eigen::Vector3d(std::round(U(rng) * 8) / 8, std::round(U(rng) * 8) / 8, std::round(U(rng) * 8) / 8);
+    for(std::size_t t = 0; t < map.tetrahedra.size(); ++t)
+      for(int c = 0; c < 4; ++c)
+        if(map.tetrahedra[t][c] >= first_centre) map.parameters[t][c] += moves[map.tetrahedra[t][c]];
+    const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
+    ASSERT_TRUE(check.is_integer_grid());
+    ASSERT_GT(check.inverted_tetrahedra, 0u);
+    HR::Hexahedral_mesh_3 hexes;
+    const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes);
+    std::printf("folded grid k=%d: %zu inverted tets, %zu/%zu hexes, %zu incomplete, %zu folded, %zu duplicate, "
+                "%zu untraced corners, %zu spurious vertices removed\n", k, r.inverted_tetrahedra, r.hexahedra,
+                g.mesh.hexahedra.size() * k * k * k, r.incomplete_cells, r.folded_cells, r.duplicate_cells,
+                r.untraced_corners, r.removed_vertices);
+    EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::DEFECTS);
+    EXPECT_EQ(r.inverted_tetrahedra, check.inverted_tetrahedra);
+    EXPECT_LE(hexes.hexahedra.size(), g.mesh.hexahedra.size() * k * k * k);
+    for(const auto& h : hexes.hexahedra) {
+      std::array<std::uint32_t, 8> s = h;
+      std::sort(s.begin(), s.end());
+      EXPECT_TRUE(std::adjacent_find(s.begin(), s.end()) == s.end());
+      for(std::uint32_t v : h) EXPECT_LT(v, hexes.points.size());
+    }
+    // no folded cell is emitted, and the cells kept are the original ones (no overlap)
+    const Hex_measures m = measure(hexes);
+    EXPECT_GT(m.min_sj, 0.);
+    EXPECT_EQ(m.nonconforming_quads, 0u);
+    EXPECT_EQ(m.unused_vertices, 0u);
+    EXPECT_GT(r.folded_cells + r.incomplete_cells, 0u);
+    EXPECT_GT(hexes.hexahedra.size(), g.mesh.hexahedra.size() * k * k * k / 2); // the defects stay local
+  }
+}

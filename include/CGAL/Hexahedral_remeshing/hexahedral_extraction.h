@@ -198,6 +198,10 @@ struct Hexahedral_extraction_result
   std::size_t untraced_corners = 0;
   /// Cells left out because a corner was missing or ambiguous.
   std::size_t incomplete_cells = 0;
+  /// Cells next to inverted tetrahedra left out because a corner is inverted in space (folds).
+  std::size_t folded_cells = 0;
+  /// Hex vertices that belong to no emitted cell (spurious copies in folds), removed from the mesh.
+  std::size_t removed_vertices = 0;
   /// Cells found twice (from two centres; only the first is kept).
   std::size_t duplicate_cells = 0;
   /// Tetrahedra reached with two different transitions while walking a cell.
@@ -339,9 +343,22 @@ Hexahedral_extraction_result extract_hexahedra(const Integer_grid_map& map, Hexa
   hexes.clear();
   ex::Cell_assembly_report cells;
   ex::assemble_hex_cells(map, topo, sm, tr, lp, hexes.hexahedra, hexes.hexahedron_source_tetrahedra, cells);
-  hexes.points = std::move(lp.positions);
-  hexes.vertex_locations = std::move(lp.locations);
-  hexes.vertex_tags = std::move(lp.tags);
+  {
+    // keep only the vertices of the emitted cells (none is dropped on a valid map)
+    std::vector<std::uint32_t> new_id(lp.positions.size(), ex::no_tetrahedron);
+    for(auto& h : hexes.hexahedra)
+      for(auto& v : h) {
+        if(new_id[v] == ex::no_tetrahedron) {
+          new_id[v] = std::uint32_t(hexes.points.size());
+          hexes.points.push_back(lp.positions[v]);
+          hexes.vertex_locations.push_back(lp.locations[v]);
+          hexes.vertex_tags.push_back(lp.tags[v]);
+        }
+        v = new_id[v];
+      }
+    result.removed_vertices = lp.positions.size() - hexes.points.size();
+  }
+  result.folded_cells = cells.folded_cells;
   result.untraced_corners = cells.missing_corners;
   result.incomplete_cells = cells.incomplete_cells;
   result.duplicate_cells = cells.duplicate_cells;
@@ -352,7 +369,8 @@ Hexahedral_extraction_result extract_hexahedra(const Integer_grid_map& map, Hexa
   result.hexahedra = hexes.hexahedra.size();
   result.vertices = hexes.points.size();
   const bool clean = result.inverted_tetrahedra == 0 && result.inverted_positions == 0 && result.untraced_corners == 0 &&
-                     result.incomplete_cells == 0 && result.duplicate_cells == 0 && result.inconsistent_walks == 0 &&
+                     result.incomplete_cells == 0 && result.duplicate_cells == 0 &&
+                     result.folded_cells == 0 && result.removed_vertices == 0 && result.inconsistent_walks == 0 &&
                      result.sanitizing_failures == 0;
   result.status = clean ? Hexahedral_extraction_result::OK : Hexahedral_extraction_result::DEFECTS;
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -27,6 +27,7 @@ struct Cell_assembly_report
   std::size_t duplicate_cells = 0;      // the same 8 vertices found from two centres
   std::size_t inconsistent_walks = 0;   // a tetrahedron reached with two different transitions
   std::size_t truncated_walks = 0;      // walks stopped by the size limit
+  std::size_t folded_cells = 0;         // cells next to inverted tetrahedra whose corners are inverted in space
 };
 
 // Hex cells from their centres. The cell of centre c (chart of tetrahedron o) is the open cube
@@ -47,6 +48,20 @@ inline void assemble_hex_cells(const Integer_grid_map& map, const Map_topology& 
   std::vector<Rigid_transform> to_centre(nt);
   std::vector<std::uint32_t> queue;
   std::set<std::array<std::uint32_t, 8> > seen;
+  // Tetrahedra within two vertex rings of an inverted one: a fold reaches that far around it, and a
+  // cell walk that meets none of them sees a locally injective map.
+  std::vector<char> inverted(nt, 0);
+  for(std::size_t t = 0; t < nt; ++t) inverted[t] = parameter_orientation(S[t]) == CGAL::NEGATIVE;
+  for(int ring = 0; ring < 2; ++ring) {
+    std::vector<char> vertex_near(map.points.size(), 0);
+    for(std::size_t t = 0; t < nt; ++t)
+      if(inverted[t])
+        for(int k = 0; k < 4; ++k) vertex_near[map.tetrahedra[t][k]] = 1;
+    for(std::size_t t = 0; t < nt; ++t)
+      for(int k = 0; k < 4; ++k)
+        if(vertex_near[map.tetrahedra[t][k]]) inverted[t] = 1;
+  }
+  const auto& positions = lp.positions;
   static const int vtk_corner[8] = {0, 1, 3, 2, 4, 5, 7, 6}; // VTK vertex i -> corner bits (x | y << 1 | z << 2)
   const std::size_t max_walk = 100000;
 
@@ -56,13 +71,14 @@ inline void assemble_hex_cells(const Integer_grid_map& map, const Map_topology& 
     const std::uint32_t mark = std::uint32_t(ci);
     std::array<std::uint32_t, 8> corner;
     corner.fill(no_tetrahedron);
-    bool conflict = false;
+    bool conflict = false, near_inverted = false;
     queue.assign(1, centre.tetrahedron);
     stamp[centre.tetrahedron] = mark;
     to_centre[centre.tetrahedron] = Rigid_transform();
     for(std::size_t q = 0; q < queue.size(); ++q) {
       const std::uint32_t t = queue[q];
       const Rigid_transform M = to_centre[t];
+      near_inverted = near_inverted || inverted[t];
       for(std::uint32_t i = lp.per_tetrahedron_begin[t]; i < lp.per_tetrahedron_begin[t + 1]; ++i) {
         const Eigen::Vector3d d = apply(M, lp.copies[i].x) - c;
         if(std::abs(d[0]) != 0.5 || std::abs(d[1]) != 0.5 || std::abs(d[2]) != 0.5) continue;
@@ -104,9 +120,20 @@ inline void assemble_hex_cells(const Integer_grid_map& map, const Map_topology& 
       report.conflicting_corners += conflict ? 1 : 0;
       continue;
     }
-    if(!seen.insert(sorted).second) { ++report.duplicate_cells; continue; }
     std::array<std::uint32_t, 8> hex;
     for(int i = 0; i < 8; ++i) hex[i] = corner[vtk_corner[i]];
+    // Where the map folds, a lattice point is covered more than once and spurious copies of hex
+    // vertices appear (HexEx cancels them with its anti-darts). A cell met by inverted tetrahedra is
+    // kept only if every corner is positively oriented in space (exact), so no folded cell is emitted.
+    if(near_inverted) {
+      static const int nb[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+      bool ok = true;
+      for(int i = 0; i < 8 && ok; ++i)
+        ok = CGAL::orientation(positions[hex[i]], positions[hex[nb[i][0]]], positions[hex[nb[i][1]]],
+                               positions[hex[nb[i][2]]]) == CGAL::POSITIVE;
+      if(!ok) { ++report.folded_cells; continue; }
+    }
+    if(!seen.insert(sorted).second) { ++report.duplicate_cells; continue; }
     hexes.push_back(hex);
     sources.push_back(centre.tetrahedron);
   }
