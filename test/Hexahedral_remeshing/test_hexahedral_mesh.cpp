@@ -25,6 +25,7 @@
 #include <string>
 #include <array>
 #include <map>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -120,8 +121,9 @@ TEST(HexMeshGenerators, MapFromHexMesh)
       // the faces between hexes (4 tet faces per quad) carry the random transitions
       const std::size_t inner_quads = (6 * g.mesh.hexahedra.size() - g.expected.boundary_quads) / 2;
       EXPECT_LE(non_identity, 4 * inner_quads);
-      if(inner_quads > 0)
+      if(inner_quads > 0) {
         EXPECT_GT(non_identity, 0u);
+      }
     }
 }
 
@@ -283,6 +285,37 @@ TEST(CheckHexahedralMesh, MissingHexahedra)
   EXPECT_FALSE(HR::check_hexahedral_mesh(HR::Hexahedral_mesh_3()).valid);
 }
 
+// The grid hashing of the duplicate search against the brute-force count on clustered random points.
+TEST(CheckHexahedralMesh, DuplicateVerticesAgainstBruteForce)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0., 1.), jitter(-0.009, 0.009);
+  typedef HR::Hexahedral_mesh_3::Point_3 P;
+  for(double tolerance : {0.01, 0.02, 0.05}) {
+    std::vector<P> points;
+    for(int i = 0; i < 600; ++i) {
+      if(i > 0 && i % 3 == 0) {
+        const P& q = points[rng() % points.size()];
+        points.emplace_back(q.x() + jitter(rng), q.y() + jitter(rng), q.z() + jitter(rng));
+      } else {
+        points.emplace_back(unit(rng), unit(rng), unit(rng));
+      }
+    }
+    std::vector<bool> used(points.size(), true);
+    used[7] = false;
+    std::size_t brute = 0;
+    for(std::size_t v = 0; v < points.size(); ++v) {
+      if(!used[v]) continue;
+      bool d = false;
+      for(std::size_t w = 0; w < v && !d; ++w)
+        d = used[w] && CGAL::squared_distance(points[v], points[w]) < tolerance * tolerance;
+      brute += d;
+    }
+    EXPECT_GT(brute, 50u);
+    EXPECT_EQ(HR::internal::count_duplicate_vertices(points, used, tolerance), brute) << tolerance;
+  }
+}
+
 TEST(CheckHexahedralMesh, OverlappingHexesSharingAFaceTheSameWay)
 {
   // B = [0.5, 1] x [0, 1]^2 shares A's face x = 1 but lies on A's side: both positive, not conforming
@@ -436,7 +469,9 @@ TEST(HexahedralMeshIO, ReadersRejectDefectsClearly)
       ADD_FAILURE() << "no error for: " << words;
     } catch(const HR::Input_error& e) {
       EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-      if(line > 0) EXPECT_EQ(e.line(), line) << e.what();
+      if(line > 0) {
+        EXPECT_EQ(e.line(), line) << e.what();
+      }
     }
   };
   auto replace = [](std::string s, const std::string& from, const std::string& to) {

@@ -192,7 +192,9 @@ inline int compare_quad_cycles(const std::array<std::uint32_t, 4>& a, const std:
 }
 
 // Number of used vertices within `tolerance` of a used vertex of smaller index, by hashing the points
-// on a grid of cell size `tolerance` and comparing within the 27 neighbouring cells.
+// on a grid of cell size 2 x `tolerance`: a point's partners then lie in its cell or in the neighbouring
+// cells on the side of its nearest cell faces, 2 x 2 x 2 cells in all. The vertices of a cell are chained
+// through `next` rather than stored in per-cell vectors (one allocation per vertex is what dominated).
 inline std::size_t count_duplicate_vertices(const std::vector<Hexahedral_mesh_3::Point_3>& points,
                                             const std::vector<bool>& used, double tolerance)
 {
@@ -206,35 +208,48 @@ inline std::size_t count_duplicate_vertices(const std::vector<Hexahedral_mesh_3:
   struct Key_hash {
     std::size_t operator()(const std::array<std::int64_t, 3>& k) const
     {
-      std::uint64_t h = 1469598103934665603ull;
-      for(auto v : k) { h ^= std::uint64_t(v); h *= 1099511628211ull; }
+      // splitmix64 finalizer on a combination of the three cell coordinates
+      std::uint64_t h = std::uint64_t(k[0]) * 0x9E3779B97F4A7C15ull ^ std::uint64_t(k[1]) * 0xC2B2AE3D27D4EB4Full ^
+                        std::uint64_t(k[2]) * 0x165667B19E3779F9ull;
+      h ^= h >> 30; h *= 0xBF58476D1CE4E5B9ull;
+      h ^= h >> 27; h *= 0x94D049BB133111EBull;
+      h ^= h >> 31;
       return std::size_t(h);
     }
   };
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>, Key_hash> cells;
+  const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+  std::unordered_map<std::array<std::int64_t, 3>, std::uint32_t, Key_hash> first;
+  first.reserve(points.size());
+  std::vector<std::uint32_t> next(points.size(), none);
   const double t2 = tolerance * tolerance;
   for(std::uint32_t v = 0; v < points.size(); ++v) {
     if(!used[v])
       continue;
     const auto& p = points[v];
-    const std::array<std::int64_t, 3> k{ {std::int64_t(std::floor(p.x() / tolerance)),
-                                          std::int64_t(std::floor(p.y() / tolerance)),
-                                          std::int64_t(std::floor(p.z() / tolerance))} };
+    std::array<std::int64_t, 3> k;
+    int side[3];
+    for(int d = 0; d < 3; ++d) {
+      const double f = p[d] / (2. * tolerance);
+      const double c = std::floor(f);
+      k[d] = std::int64_t(c);
+      side[d] = (f - c < 0.5) ? -1 : 1;
+    }
     bool duplicate = false;
-    for(int dx = -1; dx <= 1 && !duplicate; ++dx)
-      for(int dy = -1; dy <= 1 && !duplicate; ++dy)
-        for(int dz = -1; dz <= 1 && !duplicate; ++dz) {
-          auto it = cells.find({ {k[0] + dx, k[1] + dy, k[2] + dz} });
-          if(it == cells.end())
-            continue;
-          for(std::uint32_t w : it->second)
-            if(CGAL::squared_distance(p, points[w]) < t2) {
-              duplicate = true;
-              break;
-            }
-        }
+    for(int m = 0; m < 8 && !duplicate; ++m) {
+      const std::array<std::int64_t, 3> n{ {k[0] + ((m & 1) ? side[0] : 0), k[1] + ((m & 2) ? side[1] : 0),
+                                            k[2] + ((m & 4) ? side[2] : 0)} };
+      auto it = first.find(n);
+      if(it == first.end())
+        continue;
+      for(std::uint32_t w = it->second; w != none && !duplicate; w = next[w])
+        duplicate = CGAL::squared_distance(p, points[w]) < t2;
+    }
     duplicates += duplicate;
-    cells[k].push_back(v);
+    auto inserted = first.emplace(k, v);
+    if(!inserted.second) {
+      next[v] = inserted.first->second;
+      inserted.first->second = v;
+    }
   }
   return duplicates;
 }
@@ -355,7 +370,7 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
       std::sort(q.key.begin(), q.key.end());
       quads.push_back(q);
     }
-  std::stable_sort(quads.begin(), quads.end());
+  std::sort(quads.begin(), quads.end());
   std::vector<std::array<Id, 4> > boundary;
   for(std::size_t i = 0; i < quads.size();) {
     std::size_t j = i + 1;
