@@ -246,7 +246,9 @@ TEST(Extraction, GeneratedHexMeshesGiveBackKCubedHexesPerHex)
       EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::OK);
       ASSERT_EQ(hexes.hexahedra.size(), o.hexahedra);
       EXPECT_EQ(r.hexahedra, o.hexahedra);
-      if(o.vertices) EXPECT_EQ(hexes.points.size(), o.vertices);
+      if(o.vertices) {
+        EXPECT_EQ(hexes.points.size(), o.vertices);
+      }
       const Hex_measures m = measure(hexes);
       EXPECT_GT(m.min_sj, 0.);
       EXPECT_EQ(m.nonconforming_quads, 0u);
