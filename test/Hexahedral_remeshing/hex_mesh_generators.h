@@ -44,6 +44,8 @@ struct Hex_mesh_oracle
   std::map<int, std::size_t> interior_irregular_edges;
   // valence -> number of boundary edges with that valence != 2
   std::map<int, std::size_t> boundary_irregular_edges;
+  // valence -> number of chains of interior irregular edges (unchanged by the scaling)
+  std::map<int, std::size_t> interior_irregular_chains;
 };
 
 struct Generated_hex_mesh
@@ -204,8 +206,10 @@ inline Generated_hex_mesh make_polygon_prism(int n, int layers, double height = 
   g.expected.hexahedra = N * L;
   g.expected.vertices = (L + 1) * (2 * N + 1);
   g.expected.boundary_quads = 2 * N + 2 * N * L;
-  if(n != 4)
+  if(n != 4) {
     g.expected.interior_irregular_edges[n] = L;
+    g.expected.interior_irregular_chains[n] = 1;
+  }
   g.expected.boundary_irregular_edges[1] = N * L + 4 * N;
   return g;
 }
@@ -213,7 +217,7 @@ inline Generated_hex_mesh make_polygon_prism(int n, int layers, double height = 
 // Cubed ball of radius `radius`: an inner cube [-s, s]^3 of n^3 hexes (s = inner_ratio x radius / sqrt 3)
 // inside 6 frusta, one per cube face, of n x n x `shells` hexes whose outer layer is projected on the
 // sphere. Interior valence-3 edges: the 12 inner cube edges (12 n) and the 8 radial lines from the
-// cube corners to the sphere (8 shells); they meet at the 8 cube corners. The boundary (a cubed sphere)
+// cube corners to the sphere (8 shells); they meet at the 8 cube corners (20 chains). The boundary (a cubed sphere)
 // has no irregular edge.
 inline Generated_hex_mesh make_cubed_ball(int n = 3, int shells = 1, double radius = 1., double inner_ratio = 0.6)
 {
@@ -275,6 +279,8 @@ inline Generated_hex_mesh make_cubed_ball(int n = 3, int shells = 1, double radi
   g.expected.vertices = (N + 1) * (N + 1) * (N + 1) + S * (6 * N * N + 2);
   g.expected.boundary_quads = 6 * N * N;
   g.expected.interior_irregular_edges[3] = 12 * N + 8 * S;
+  // the 12 cube edges and the 8 radial lines, split at the cube corners (4 lines meet there)
+  g.expected.interior_irregular_chains[3] = 20;
   return g;
 }
 

@@ -149,6 +149,7 @@ TEST(CheckHexahedralMesh, GeneratedMeshesMatchTheirOracles)
     EXPECT_GT(c.min_scaled_jacobian, 0.2);
     EXPECT_EQ(c.irregular_interior_edges, g.expected.interior_irregular_edges);
     EXPECT_EQ(c.irregular_boundary_edges, g.expected.boundary_irregular_edges);
+    EXPECT_EQ(c.irregular_interior_chains, g.expected.interior_irregular_chains);
     // a closed surface of quads: 2 E = 4 F
     EXPECT_EQ(2 * c.boundary_edges, 4 * c.boundary_quads);
   }
@@ -189,6 +190,7 @@ TEST(CheckHexahedralMesh, PrismAxisIsOneChainOfValenceN)
       const auto c = HR::check_hexahedral_mesh(T::make_polygon_prism(n, layers).mesh);
       const std::map<int, std::size_t> axis{ {n, std::size_t(layers)} };
       EXPECT_EQ(c.irregular_interior_edges, axis) << n << " " << layers;
+      EXPECT_EQ(c.irregular_interior_chains, (std::map<int, std::size_t>{ {n, 1u} })) << n << " " << layers;
     }
   // n = 4: a plain 2 x 2 grid in disguise
   EXPECT_TRUE(HR::check_hexahedral_mesh(T::make_polygon_prism(4, 2).mesh).irregular_interior_edges.empty());

@@ -123,6 +123,10 @@ struct Hexahedral_mesh_check
   std::map<int, std::size_t> irregular_interior_edges;
   /// Histogram valence -> number of boundary edges of valence != 2.
   std::map<int, std::size_t> irregular_boundary_edges;
+  /// Histogram valence -> number of chains of irregular interior edges: maximal paths of edges of one
+  /// valence through vertices where exactly two irregular interior edges meet, both of that valence
+  /// (a closed loop is one chain). They compare with the curves of the frame field's singular graph.
+  std::map<int, std::size_t> irregular_interior_chains;
 
   /// At least one hexahedron, none invalid, conforming, manifold boundary, no duplicate vertex or
   /// hexahedron, and `min_scaled_jacobian > 0`.
@@ -473,6 +477,8 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
       for(const auto& e : edges)
         keys.push_back(internal::hex_edge_key(mesh.hexahedra[h][e[0]], mesh.hexahedra[h][e[1]]));
     std::sort(keys.begin(), keys.end());
+    // irregular interior edges (key, valence), for the chains
+    std::vector<std::pair<std::uint64_t, int> > irregular;
     for(std::size_t i = 0; i < keys.size();) {
       std::size_t j = i + 1;
       while(j < keys.size() && keys[j] == keys[i])
@@ -485,11 +491,33 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
       } else {
         ++r.interior_edges;
         ++r.interior_edge_valences[valence];
-        if(valence != 4)
+        if(valence != 4) {
           ++r.irregular_interior_edges[valence];
+          irregular.emplace_back(keys[i], valence);
+        }
       }
       i = j;
     }
+
+    // chains: join the two edges at every vertex of irregular degree 2 when their valences agree
+    std::vector<std::pair<Id, std::uint32_t> > ends;  // (vertex, irregular edge)
+    for(std::uint32_t e = 0; e < irregular.size(); ++e) {
+      ends.emplace_back(Id(irregular[e].first >> 32), e);
+      ends.emplace_back(Id(irregular[e].first & 0xffffffffu), e);
+    }
+    std::sort(ends.begin(), ends.end());
+    internal::Union_find chains(irregular.size());
+    for(std::size_t i = 0; i < ends.size();) {
+      std::size_t j = i + 1;
+      while(j < ends.size() && ends[j].first == ends[i].first)
+        ++j;
+      if(j - i == 2 && irregular[ends[i].second].second == irregular[ends[i + 1].second].second)
+        chains.unite(ends[i].second, ends[i + 1].second);
+      i = j;
+    }
+    for(std::uint32_t e = 0; e < irregular.size(); ++e)
+      if(chains.find(e) == e)
+        ++r.irregular_interior_chains[irregular[e].second];
   }
 
   // quality and volume
