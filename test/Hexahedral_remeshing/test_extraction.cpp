@@ -414,3 +414,32 @@ TEST(Extraction, FoldedMapsDoNotCrashAndEmitOnlyCompleteCells)
     EXPECT_GT(hexes.hexahedra.size(), g.mesh.hexahedra.size() * k * k * k / 2); // the defects stay local
   }
 }
+
+TEST(Extraction, SanitizingAbsorbsSmallNoise)
+{
+  // Noise of 1e-6 on every corner parameter, independently per tetrahedron: the transitions no longer
+  // hold exactly, the boundary leaves its planes and the singular axes move; sanitizing restores them.
+  for(const auto& g : {HR::test::make_polygon_prism(3, 2), HR::test::make_polygon_prism(5, 2), HR::test::make_cubed_ball(2, 1)}) {
+    SCOPED_TRACE(g.name);
+    HR::Integer_grid_map map = HR::test::map_from_hex_mesh(g.mesh, 2, 3, false);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> U(-1e-6, 1e-6);
+    for(auto& t : map.parameters)
+      for(auto& u : t) u += Eigen::Vector3d(U(rng), U(rng), U(rng));
+    HR::Hexahedral_mesh_3 hexes;
+    const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes);
+    const HR::test::Hex_mesh_oracle o = HR::test::scaled_oracle(g.expected, 2);
+    EXPECT_EQ(r.hexahedra, o.hexahedra);
+    EXPECT_GT(r.max_sanitizing_move, 0.);
+    EXPECT_LT(r.max_sanitizing_move, 1e-5);
+    if(!o.interior_irregular_edges.empty()) {
+      EXPECT_GT(r.singular_snaps, 0u);
+    }
+    EXPECT_EQ(r.sanitizing_failures, 0u);
+    EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::OK);
+    const Hex_measures m = measure(hexes);
+    EXPECT_EQ(m.nonconforming_quads, 0u);
+    EXPECT_GT(m.min_sj, 0.);
+    EXPECT_EQ(m.interior_irregular, o.interior_irregular_edges);
+  }
+}
