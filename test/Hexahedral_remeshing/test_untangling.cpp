@@ -1,4 +1,6 @@
 // Tests of the foldover-free minimizer (Garanzha et al. 2021) and of the hexahedral mesh smoothing.
+#include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
 #include <CGAL/Hexahedral_remeshing/internal/untangling/foldover_free_map.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -382,4 +385,429 @@ TEST(FoldoverFreeMap, HeavilyTangledLargerGrid)
   EXPECT_TRUE(r.success);
   EXPECT_EQ(exact_non_positive(s.problem, y), 0u);
   EXPECT_LT((y - s.identity(g)).lpNorm<Eigen::Infinity>(), 1e-3);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hexahedral mesh smoothing
+
+namespace {
+
+typedef HR::Hexahedral_mesh_3 Hex_mesh;
+typedef HR::Hexahedral_smoothing_reference Reference;
+
+// Independent scaled Jacobian (algorithms.md §6), min over the 8 corners.
+double hex_sj(const Hex_mesh& m, std::size_t h)
+{
+  static const int nb[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+  double sj = 2;
+  for(int i = 0; i < 8; ++i) {
+    const Point& p = m.points[m.hexahedra[h][i]];
+    Eigen::Matrix3d E;
+    for(int k = 0; k < 3; ++k) {
+      const Point& q = m.points[m.hexahedra[h][nb[i][k]]];
+      Eigen::Vector3d e(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
+      if(e.norm() == 0) return 0;
+      E.col(k) = e.normalized();
+    }
+    sj = std::min(sj, E.determinant());
+  }
+  return sj;
+}
+
+std::pair<double, double> min_mean_sj(const Hex_mesh& m)
+{
+  double mn = 2, sum = 0;
+  for(std::size_t h = 0; h < m.hexahedra.size(); ++h) {
+    const double s = hex_sj(m, h);
+    mn = std::min(mn, s);
+    sum += s;
+  }
+  return std::make_pair(mn, sum / double(m.hexahedra.size()));
+}
+
+// Brute-force distances to the reference (independent of the AABB tree of the library).
+double distance_to_triangles(const Reference& ref, const Point& p)
+{
+  double d = std::numeric_limits<double>::max();
+  for(const auto& t : ref.triangles) {
+    const CGAL::Exact_predicates_inexact_constructions_kernel::Triangle_3 tri(ref.points[t[0]], ref.points[t[1]], ref.points[t[2]]);
+    d = std::min(d, CGAL::squared_distance(p, tri));
+  }
+  return std::sqrt(d);
+}
+
+double distance_to_polyline(const std::vector<Point>& pl, const Point& p)
+{
+  double d = std::numeric_limits<double>::max();
+  for(std::size_t i = 0; i + 1 < pl.size(); ++i)
+    d = std::min(d, CGAL::squared_distance(p, CGAL::Exact_predicates_inexact_constructions_kernel::Segment_3(pl[i], pl[i + 1])));
+  return std::sqrt(d);
+}
+
+// A grid of N^3 unit cubes scaled to [0,1]^3, VTK order, tags set, and its exact reference (the
+// cube's 12 triangles, 12 edges, 8 corners).
+struct Hex_cube
+{
+  Hex_mesh mesh;
+  Reference ref;
+  std::vector<int> edge_of; // per vertex: index of its cube edge polyline, -1 if none
+  int N;
+
+  explicit Hex_cube(int n) : N(n)
+  {
+    auto id = [n](int i, int j, int k) { return std::uint32_t((k * (n + 1) + j) * (n + 1) + i); };
+    for(int k = 0; k <= n; ++k)
+      for(int j = 0; j <= n; ++j)
+        for(int i = 0; i <= n; ++i) {
+          mesh.points.emplace_back(double(i) / n, double(j) / n, double(k) / n);
+          const int on = int(i == 0 || i == n) + int(j == 0 || j == n) + int(k == 0 || k == n);
+          std::uint8_t tag = 0;
+          if(on >= 1) tag |= Hex_mesh::BOUNDARY;
+          if(on >= 2) tag |= Hex_mesh::FEATURE_CURVE;
+          if(on == 3) tag |= Hex_mesh::CORNER;
+          mesh.vertex_tags.push_back(tag);
+        }
+    for(int k = 0; k < n; ++k)
+      for(int j = 0; j < n; ++j)
+        for(int i = 0; i < n; ++i)
+          mesh.hexahedra.push_back({ {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                                      id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)} });
+    for(int c = 0; c < 8; ++c) ref.points.emplace_back(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for(const auto& q : quads) {
+      ref.triangles.push_back({ {q[0], q[1], q[2]} });
+      ref.triangles.push_back({ {q[0], q[2], q[3]} });
+    }
+    for(int a = 0; a < 8; ++a)
+      for(int b = a + 1; b < 8; ++b)
+        if(__builtin_popcount(unsigned(a ^ b)) == 1) ref.feature_polylines.push_back({ref.points[a], ref.points[b]});
+    ref.corners = ref.points;
+    edge_of.assign(mesh.points.size(), -1);
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      if((mesh.vertex_tags[v] & Hex_mesh::FEATURE_CURVE) && !(mesh.vertex_tags[v] & Hex_mesh::CORNER))
+        for(std::size_t c = 0; c < ref.feature_polylines.size(); ++c)
+          if(distance_to_polyline(ref.feature_polylines[c], mesh.points[v]) == 0) edge_of[v] = int(c);
+  }
+};
+
+// A hex mesh of the cylinder r = 1, -1 <= z <= 1: an O-grid (inner n x n square of half-side 1/2,
+// m ring layers blended linearly to the circle) extruded in nz layers; the reference is the
+// cylinder triangulated with K segments (caps as fans), its two rims as closed polylines.
+struct Hex_cylinder
+{
+  Hex_mesh mesh;
+  Reference ref;
+  std::vector<bool> rim;
+
+  Hex_cylinder(int n, int m, int nz, int K)
+  {
+    // 2D points and quads
+    std::vector<Eigen::Vector2d> p2;
+    std::vector<std::array<int, 4> > q2;
+    std::vector<int> boundary2; // 1 on the circle
+    auto sq = [&](int i, int j) { return j * (n + 1) + i; };
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i) {
+        p2.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n);
+        boundary2.push_back(0);
+      }
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) q2.push_back({ {sq(i, j), sq(i + 1, j), sq(i + 1, j + 1), sq(i, j + 1)} });
+    // perimeter of the square, counter-clockwise, 4n points
+    std::vector<int> perimeter;
+    for(int i = 0; i < n; ++i) perimeter.push_back(sq(i, 0));
+    for(int j = 0; j < n; ++j) perimeter.push_back(sq(n, j));
+    for(int i = n; i > 0; --i) perimeter.push_back(sq(i, n));
+    for(int j = n; j > 0; --j) perimeter.push_back(sq(0, j));
+    const int P = int(perimeter.size());
+    std::vector<std::vector<int> > layer(m + 1);
+    layer[0] = perimeter;
+    for(int k = 1; k <= m; ++k)
+      for(int s = 0; s < P; ++s) {
+        const Eigen::Vector2d a = p2[perimeter[s]];
+        const double t = double(k) / m;
+        p2.push_back((1 - t) * a + t * a.normalized());
+        boundary2.push_back(k == m ? 1 : 0);
+        layer[k].push_back(int(p2.size()) - 1);
+      }
+    for(int k = 0; k < m; ++k)
+      for(int s = 0; s < P; ++s)
+        q2.push_back({ {layer[k][s], layer[k + 1][s], layer[k + 1][(s + 1) % P], layer[k][(s + 1) % P]} });
+    for(auto& q : q2) {
+      double area = 0;
+      for(int c = 0; c < 4; ++c) {
+        const Eigen::Vector2d& a = p2[q[c]];
+        const Eigen::Vector2d& b = p2[q[(c + 1) % 4]];
+        area += a.x() * b.y() - a.y() * b.x();
+      }
+      if(area < 0) std::swap(q[1], q[3]);
+    }
+    const std::uint32_t L = std::uint32_t(p2.size());
+    for(int z = 0; z <= nz; ++z)
+      for(std::size_t v = 0; v < p2.size(); ++v) {
+        mesh.points.emplace_back(p2[v].x(), p2[v].y(), -1. + 2. * z / nz);
+        const bool cap = z == 0 || z == nz;
+        std::uint8_t tag = 0;
+        if(cap || boundary2[v]) tag |= Hex_mesh::BOUNDARY;
+        if(cap && boundary2[v]) tag |= Hex_mesh::FEATURE_CURVE;
+        mesh.vertex_tags.push_back(tag);
+        rim.push_back(cap && boundary2[v]);
+      }
+    for(int z = 0; z < nz; ++z)
+      for(const auto& q : q2) {
+        std::array<std::uint32_t, 8> h;
+        for(int c = 0; c < 4; ++c) {
+          h[c] = std::uint32_t(z) * L + std::uint32_t(q[c]);
+          h[c + 4] = std::uint32_t(z + 1) * L + std::uint32_t(q[c]);
+        }
+        mesh.hexahedra.push_back(h);
+      }
+    // reference
+    for(int z = 0; z < 2; ++z)
+      for(int k = 0; k < K; ++k) {
+        const double a = 2 * M_PI * k / K;
+        ref.points.emplace_back(std::cos(a), std::sin(a), z == 0 ? -1. : 1.);
+      }
+    ref.points.emplace_back(0, 0, -1);
+    ref.points.emplace_back(0, 0, 1);
+    const std::uint32_t c0 = std::uint32_t(2 * K), c1 = c0 + 1;
+    for(int k = 0; k < K; ++k) {
+      const std::uint32_t a = std::uint32_t(k), b = std::uint32_t((k + 1) % K);
+      ref.triangles.push_back({ {a, b, b + std::uint32_t(K)} });
+      ref.triangles.push_back({ {a, b + std::uint32_t(K), a + std::uint32_t(K)} });
+      ref.triangles.push_back({ {c0, b, a} });
+      ref.triangles.push_back({ {c1, a + std::uint32_t(K), b + std::uint32_t(K)} });
+    }
+    for(int z = 0; z < 2; ++z) {
+      std::vector<Point> pl;
+      for(int k = 0; k <= K; ++k) pl.push_back(ref.points[std::size_t(z * K + k % K)]);
+      ref.feature_polylines.push_back(pl);
+    }
+  }
+};
+
+struct Recording_visitor
+{
+  int untangled = 0, rounds = 0;
+  void after_untangling(const HR::Hexahedral_mesh_quality&) { ++untangled; }
+  void after_round(int, const HR::Hexahedral_mesh_quality&, bool) { ++rounds; }
+};
+
+} // namespace
+
+TEST(HexSmoothing, TangledCubeGridIsUntangledAndKeepsItsBoundary)
+{
+  Hex_cube cube(5);
+  const Hex_mesh input = cube.mesh;
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-0.16, 0.16); // +-0.8 cell
+  for(std::size_t v = 0; v < cube.mesh.points.size(); ++v)
+    if(cube.mesh.vertex_tags[v] == 0) {
+      const Point& p = cube.mesh.points[v];
+      cube.mesh.points[v] = Point(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+    }
+  const std::pair<double, double> before = min_mean_sj(cube.mesh);
+  std::size_t inverted = 0;
+  for(std::size_t h = 0; h < cube.mesh.hexahedra.size(); ++h) inverted += hex_sj(cube.mesh, h) <= 0 ? 1 : 0;
+  EXPECT_GE(inverted, 5u);
+  const Hex_mesh tangled = cube.mesh;
+  Recording_visitor visitor;
+  const HR::Hexahedral_smoothing_report r =
+    HR::smooth_hexahedral_mesh(cube.mesh, cube.ref, CGAL::parameters::visitor(std::ref(visitor)));
+  const std::pair<double, double> after = min_mean_sj(cube.mesh);
+  EXPECT_TRUE(r.untangling_run);
+  EXPECT_EQ(visitor.untangled, 1);
+  EXPECT_EQ(visitor.rounds, r.rounds);
+  EXPECT_GT(after.first, 0.);
+  EXPECT_GT(after.second, before.second);
+  EXPECT_NEAR(r.after.min_scaled_jacobian, after.first, 1e-12);
+  EXPECT_NEAR(r.before.min_scaled_jacobian, before.first, 1e-12);
+  EXPECT_EQ(r.before.non_positive, inverted);
+  EXPECT_EQ(r.after.non_positive, 0u);
+  EXPECT_EQ(r.fixed_vertices, 8u);
+  EXPECT_EQ(r.curve_vertices, 12u * 4u);
+  EXPECT_EQ(r.surface_vertices, 6u * 16u);
+  EXPECT_EQ(r.interior_vertices, 64u);
+  // corners did not move, feature vertices are on their edge, boundary vertices on the cube
+  for(std::size_t v = 0; v < input.points.size(); ++v) {
+    const std::uint8_t t = input.vertex_tags[v];
+    if(t & Hex_mesh::CORNER) EXPECT_EQ(cube.mesh.points[v], input.points[v]);
+    else if(t & Hex_mesh::FEATURE_CURVE)
+      EXPECT_LT(distance_to_polyline(cube.ref.feature_polylines[std::size_t(cube.edge_of[v])], cube.mesh.points[v]), 1e-12);
+    else if(t & Hex_mesh::BOUNDARY) EXPECT_LT(distance_to_triangles(cube.ref, cube.mesh.points[v]), 1e-12);
+  }
+  EXPECT_LT(r.after.hausdorff_distance, 1e-12);
+}
+
+TEST(HexSmoothing, UntaggedMeshIsClassifiedByDistance)
+{
+  // same as above without vertex_tags: the roles are recomputed from the boundary quads and distances
+  Hex_cube cube(4);
+  const Hex_mesh input = cube.mesh;
+  cube.mesh.vertex_tags.clear();
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for(std::size_t v = 0; v < cube.mesh.points.size(); ++v)
+    if(input.vertex_tags[v] == 0) {
+      const Point& p = cube.mesh.points[v];
+      cube.mesh.points[v] = Point(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+    }
+  EXPECT_LE(min_mean_sj(cube.mesh).first, 0.);
+  const HR::Hexahedral_smoothing_report r = HR::smooth_hexahedral_mesh(cube.mesh, cube.ref);
+  EXPECT_EQ(r.fixed_vertices, 8u);
+  EXPECT_EQ(r.curve_vertices, 12u * 3u);
+  EXPECT_EQ(r.surface_vertices, 6u * 9u);
+  EXPECT_EQ(r.interior_vertices, 27u);
+  EXPECT_GT(min_mean_sj(cube.mesh).first, 0.);
+  for(std::size_t v = 0; v < input.points.size(); ++v)
+    if(input.vertex_tags[v] & Hex_mesh::CORNER) EXPECT_EQ(cube.mesh.points[v], input.points[v]);
+    else if(input.vertex_tags[v] & Hex_mesh::FEATURE_CURVE)
+      EXPECT_LT(distance_to_polyline(cube.ref.feature_polylines[std::size_t(cube.edge_of[v])], cube.mesh.points[v]), 1e-12);
+}
+
+TEST(HexSmoothing, FeatureVerticesSlideOnTheirCurveAndCornersStay)
+{
+  // boundary vertices moved along the reference (features along their edge, surface vertices in their
+  // face), interior vertices jittered: the result keeps every constraint and does not lower min SJ
+  Hex_cube cube(5);
+  const Hex_mesh input = cube.mesh;
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-0.04, 0.04);
+  for(std::size_t v = 0; v < cube.mesh.points.size(); ++v) {
+    const std::uint8_t t = input.vertex_tags[v];
+    if(t & Hex_mesh::CORNER) continue;
+    Eigen::Vector3d p(input.points[v].x(), input.points[v].y(), input.points[v].z());
+    for(int d = 0; d < 3; ++d) {
+      const bool on_side = p[d] == 0. || p[d] == 1.;
+      if(!on_side) p[d] += u(rng);
+    }
+    cube.mesh.points[v] = Point(p[0], p[1], p[2]);
+  }
+  const std::pair<double, double> before = min_mean_sj(cube.mesh);
+  EXPECT_GT(before.first, 0.);
+  const HR::Hexahedral_smoothing_report r = HR::smooth_hexahedral_mesh(cube.mesh, cube.ref);
+  const std::pair<double, double> after = min_mean_sj(cube.mesh);
+  EXPECT_FALSE(r.untangling_run);
+  EXPECT_GE(after.first, before.first);
+  EXPECT_GT(after.second, before.second);
+  EXPECT_GT(after.first, 0.95); // the regular grid is the optimum
+  for(std::size_t v = 0; v < input.points.size(); ++v) {
+    const std::uint8_t t = input.vertex_tags[v];
+    if(t & Hex_mesh::CORNER) EXPECT_EQ(cube.mesh.points[v], input.points[v]);
+    else if(t & Hex_mesh::FEATURE_CURVE)
+      EXPECT_LT(distance_to_polyline(cube.ref.feature_polylines[std::size_t(cube.edge_of[v])], cube.mesh.points[v]), 1e-9 * std::sqrt(3.));
+    else if(t & Hex_mesh::BOUNDARY) EXPECT_LT(distance_to_triangles(cube.ref, cube.mesh.points[v]), 1e-9);
+  }
+  // FIX_FEATURES keeps the feature vertices where they are
+  Hex_mesh fixed = cube.mesh;
+  for(std::size_t v = 0; v < input.points.size(); ++v)
+    if(input.vertex_tags[v] == 0) {
+      const Point& p = fixed.points[v];
+      fixed.points[v] = Point(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+    }
+  const Hex_mesh jittered = fixed;
+  HR::smooth_hexahedral_mesh(fixed, cube.ref, HR::parameters::smoothing_boundary(HR::Hexahedral_smoothing_boundary::FIX_FEATURES));
+  for(std::size_t v = 0; v < input.points.size(); ++v)
+    if(input.vertex_tags[v] & (Hex_mesh::FEATURE_CURVE | Hex_mesh::CORNER)) EXPECT_EQ(fixed.points[v], jittered.points[v]);
+  // FIX_ALL and user-fixed vertices: nothing on the boundary moves, nor vertex 31 (interior)
+  Hex_mesh all = jittered;
+  std::vector<bool> user(all.points.size(), false);
+  ASSERT_EQ(input.vertex_tags[43], 0);
+  user[43] = true;
+  HR::smooth_hexahedral_mesh(all, cube.ref, HR::parameters::smoothing_boundary(HR::Hexahedral_smoothing_boundary::FIX_ALL,
+                                                                               HR::parameters::smoothing_fixed_vertices(user)));
+  for(std::size_t v = 0; v < input.points.size(); ++v)
+    if(input.vertex_tags[v] != 0 || v == 43) EXPECT_EQ(all.points[v], jittered.points[v]);
+}
+
+TEST(HexSmoothing, CylinderBoundaryIsProjectedBackAndQualityImproves)
+{
+  Hex_cylinder cyl(4, 3, 4, 96);
+  const Hex_mesh clean = cyl.mesh;
+  const double diag = std::sqrt(2. * 2. + 2. * 2. + 2. * 2.);
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> u(-0.03, 0.03);
+  for(std::size_t v = 0; v < cyl.mesh.points.size(); ++v)
+    if(cyl.mesh.vertex_tags[v] != 0) {
+      const Point& p = cyl.mesh.points[v];
+      cyl.mesh.points[v] = Point(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+    }
+  const Hex_mesh perturbed = cyl.mesh;
+  const std::pair<double, double> before = min_mean_sj(cyl.mesh);
+  double off_before = 0;
+  for(std::size_t v = 0; v < cyl.mesh.points.size(); ++v)
+    if(cyl.mesh.vertex_tags[v] != 0) off_before = std::max(off_before, distance_to_triangles(cyl.ref, cyl.mesh.points[v]));
+  EXPECT_GT(off_before, 1e-2);
+  const HR::Hexahedral_smoothing_report r = HR::smooth_hexahedral_mesh(cyl.mesh, cyl.ref);
+  const std::pair<double, double> after = min_mean_sj(cyl.mesh);
+  EXPECT_GE(after.first, before.first);
+  EXPECT_GT(after.second, before.second);
+  for(std::size_t v = 0; v < cyl.mesh.points.size(); ++v) {
+    if(cyl.mesh.vertex_tags[v] != 0) EXPECT_LT(distance_to_triangles(cyl.ref, cyl.mesh.points[v]), 1e-6 * diag);
+    if(cyl.rim[v])
+      EXPECT_LT(std::min(distance_to_polyline(cyl.ref.feature_polylines[0], cyl.mesh.points[v]),
+                         distance_to_polyline(cyl.ref.feature_polylines[1], cyl.mesh.points[v])), 1e-9 * diag);
+  }
+  EXPECT_LT(r.after.hausdorff_distance, r.before.hausdorff_distance);
+  EXPECT_GE(r.accepted_state, 1);
+  EXPECT_NEAR(r.after.mean_scaled_jacobian, after.second, 1e-12);
+}
+
+TEST(HexSmoothing, ReferenceFromATetrahedralMesh)
+{
+  // the Kuhn tet grid of the unit cube with its 12 edges as feature curves and its 8 corners
+  const Tet_grid g(3);
+  HR::Tetrahedral_soup_3<Point> soup;
+  for(const auto& p : g.points) soup.points.emplace_back(p.x(), p.y(), p.z());
+  for(const auto& t : g.tets) soup.tetrahedra.push_back({ {std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2]), std::size_t(t[3])} });
+  auto id = [](int i, int j, int k) { return std::size_t((k * 4 + j) * 4 + i); };
+  int curve = 0;
+  for(int axis = 0; axis < 3; ++axis)
+    for(int a = 0; a <= 3; a += 3)
+      for(int b = 0; b <= 3; b += 3, ++curve)
+        for(int s = 0; s < 3; ++s) {
+          int c0[3], c1[3];
+          c0[axis] = s; c1[axis] = s + 1;
+          c0[(axis + 1) % 3] = c1[(axis + 1) % 3] = a;
+          c0[(axis + 2) % 3] = c1[(axis + 2) % 3] = b;
+          soup.feature_edges.push_back({ {id(c0[0], c0[1], c0[2]), id(c1[0], c1[1], c1[2])} });
+          soup.feature_edge_curves.push_back(curve);
+        }
+  for(int c = 0; c < 8; ++c) soup.corners.push_back(id(3 * (c & 1), 3 * ((c >> 1) & 1), 3 * ((c >> 2) & 1)));
+  HR::Tetrahedral_mesh_3<> tets;
+  HR::build_tetrahedral_mesh(soup, tets, HR::parameters::split_multi_boundary_tetrahedra(false));
+  const Reference ref = HR::make_hexahedral_smoothing_reference(tets);
+  EXPECT_EQ(ref.triangles.size(), 6u * 9u * 2u);
+  ASSERT_EQ(ref.feature_polylines.size(), 12u);
+  for(const auto& pl : ref.feature_polylines) {
+    ASSERT_EQ(pl.size(), 4u);
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(pl.front(), pl.back())), 1., 1e-15);
+  }
+  EXPECT_EQ(ref.corners.size(), 8u);
+
+  // and it drives the smoothing of a tangled hex grid like the exact reference
+  Hex_cube cube(3);
+  const Hex_mesh input = cube.mesh;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.25, 0.25);
+  for(std::size_t v = 0; v < cube.mesh.points.size(); ++v)
+    if(input.vertex_tags[v] == 0) {
+      const Point& p = cube.mesh.points[v];
+      cube.mesh.points[v] = Point(p.x() + u(rng), p.y() + u(rng), p.z() + u(rng));
+    }
+  HR::smooth_hexahedral_mesh(cube.mesh, ref);
+  EXPECT_GT(min_mean_sj(cube.mesh).first, 0.);
+  for(std::size_t v = 0; v < input.points.size(); ++v)
+    if(input.vertex_tags[v] & Hex_mesh::CORNER) EXPECT_EQ(cube.mesh.points[v], input.points[v]);
+}
+
+TEST(HexSmoothing, InvalidIndexThrowsAndEmptyMeshIsANoOp)
+{
+  Hex_cube cube(1);
+  Hex_mesh bad = cube.mesh;
+  bad.hexahedra[0][5] = 99;
+  EXPECT_THROW(HR::smooth_hexahedral_mesh(bad, cube.ref), HR::Input_error);
+  Hex_mesh empty;
+  const HR::Hexahedral_smoothing_report r = HR::smooth_hexahedral_mesh(empty, cube.ref);
+  EXPECT_EQ(r.rounds, 0);
 }

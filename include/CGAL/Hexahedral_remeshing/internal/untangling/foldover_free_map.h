@@ -20,7 +20,7 @@
 //         reference edge matrix R_e = [p1-p0, p2-p0, p3-p0]: M_e = R_e^{-1} T_e with T_e the target
 //         normalization, e.g. the frame E_t / s of the integer-grid map);
 //   w_e >= 0 : weight (e.g. reference volume).
-// Minimized energy: sum_e w_e f(K_e), f = (1-theta) tr(K^T K)/chi(det K, eps)^{2/3}
+// Minimized energy: sum_e w_e f(K_e) (+ an optional quadratic anchor on y), f = (1-theta) tr(K^T K)/chi(det K, eps)^{2/3}
 //                                          + theta (det^2 K + 1)/chi(det K, eps),
 // chi(D, eps) = (D + sqrt(eps^2 + D^2))/2, theta = 1/2 by default.
 // An element is valid when det K_e > 0, i.e. when its corners have the orientation of sign(det M_e);
@@ -54,6 +54,9 @@ struct Foldover_free_problem
   Eigen::VectorXd x0;                              // 12 E
   std::vector<Eigen::Matrix3d> M;                  // E
   std::vector<double> w;                           // E
+  // Optional quadratic anchor (a trust region for linearized constraints, e.g. vertices sliding in a
+  // tangent plane): adds sum_i anchor_weight[i] (y_i - anchor[i])^2 to the energy. Empty, or both of size n.
+  Eigen::VectorXd anchor_weight, anchor;
 
   std::size_t number_of_elements() const { return M.size(); }
 };
@@ -165,6 +168,11 @@ public:
     double F = 0;
     for(double f : m_energy) F += f;
     grad = m_Pt * m_gx;
+    if(m_p.anchor_weight.size() == y.size() && m_p.anchor.size() == y.size()) {
+      const Eigen::VectorXd d = y - m_p.anchor;
+      F += m_scale * d.dot(m_p.anchor_weight.cwiseProduct(d));
+      grad += (2. * m_scale) * m_p.anchor_weight.cwiseProduct(d);
+    }
     ++m_evaluations;
     if(!(F >= m_best_energy) && std::isfinite(F)) {
       m_best_energy = F;
@@ -253,7 +261,8 @@ inline Foldover_free_result minimize_foldover_free(const Foldover_free_problem& 
   const auto start = std::chrono::steady_clock::now();
   const std::size_t E = p.number_of_elements();
   if(p.w.size() != E || std::size_t(p.x0.size()) != 12 * E || std::size_t(p.P.rows()) != 12 * E ||
-     p.P.cols() != y.size())
+     p.P.cols() != y.size() || (p.anchor_weight.size() != 0 && p.anchor_weight.size() != y.size()) ||
+     p.anchor.size() != p.anchor_weight.size())
     throw Error("minimize_foldover_free: inconsistent sizes (P " + std::to_string(p.P.rows()) + "x" +
                 std::to_string(p.P.cols()) + ", x0 " + std::to_string(p.x0.size()) + ", M " +
                 std::to_string(E) + ", w " + std::to_string(p.w.size()) + ", y " + std::to_string(y.size()) + ")");
