@@ -1,5 +1,7 @@
 // Tests of the foldover-free minimizer (Garanzha et al. 2021) and of the hexahedral mesh smoothing.
+#include <CGAL/Hexahedral_remeshing/IO/read_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
 #include <CGAL/Hexahedral_remeshing/internal/untangling/foldover_free_map.h>
 
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <random>
 #include <vector>
@@ -811,3 +814,45 @@ TEST(HexSmoothing, InvalidIndexThrowsAndEmptyMeshIsANoOp)
   const HR::Hexahedral_smoothing_report r = HR::smooth_hexahedral_mesh(empty, cube.ref);
   EXPECT_EQ(r.rounds, 0);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Extracted hex meshes of the shared integer-grid maps, smoothed against their tet mesh's boundary
+
+class HexSmoothingOnExtractedMeshes : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(HexSmoothingOnExtractedMeshes, QualityNeverLowerAndBoundaryOnTheSurface)
+{
+  const std::string file = std::string(HEXREM_SHARED_DATA_DIR) + "/igm/" + GetParam() + ".hexex";
+  if(!std::filesystem::exists(file)) GTEST_SKIP() << file << " absent";
+  HR::Integer_grid_map map;
+  HR::IO::read_HexEx(file, map);
+  Hex_mesh hexes;
+  HR::extract_hexahedra(map, hexes);
+  ASSERT_GT(hexes.number_of_hexahedra(), 0u);
+  HR::Tetrahedral_soup_3<Point> soup;
+  soup.points.assign(map.points.begin(), map.points.end());
+  for(const auto& t : map.tetrahedra) soup.tetrahedra.push_back({ {t[0], t[1], t[2], t[3]} });
+  HR::Tetrahedral_mesh_3<> tets;
+  HR::build_tetrahedral_mesh(soup, tets, HR::parameters::split_multi_boundary_tetrahedra(false));
+  const Reference ref = HR::make_hexahedral_smoothing_reference(tets);
+  const Hex_mesh input = hexes;
+  const std::pair<double, double> before = min_mean_sj(hexes);
+  const HR::Hexahedral_smoothing_report r = HR::smooth_hexahedral_mesh(hexes, ref);
+  const std::pair<double, double> after = min_mean_sj(hexes);
+  EXPECT_GE(after.first, before.first);
+  if(before.first > 0) EXPECT_GT(after.first, 0.);
+  EXPECT_EQ(hexes.hexahedra, input.hexahedra);
+  // the extraction tags the boundary vertices: they stay on the tet mesh's boundary surface
+  double diag = 0;
+  for(const auto& p : ref.points)
+    diag = std::max(diag, std::sqrt(CGAL::squared_distance(p, ref.points.front())));
+  double worst = 0;
+  for(std::size_t v = 0; v < hexes.points.size(); ++v)
+    if((hexes.vertex_tags[v] & Hex_mesh::BOUNDARY) && r.accepted_state >= 0)
+      worst = std::max(worst, distance_to_triangles(ref, hexes.points[v]));
+  EXPECT_LT(worst, 1e-9 * diag);
+  RecordProperty("min_sj_before", std::to_string(before.first));
+  RecordProperty("min_sj_after", std::to_string(after.first));
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedMaps, HexSmoothingOnExtractedMeshes, ::testing::Values("hand_q", "fancy_ring_q"));

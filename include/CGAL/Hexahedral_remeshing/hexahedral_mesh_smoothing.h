@@ -357,14 +357,20 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
   std::vector<Point> best_points = hexes.points;
   Hexahedral_mesh_quality best_quality = report.before;
   bool have_candidate = false;
+  // q1 better than q2: fewer SJ <= 0, then on the reference, then min SJ higher by more than 1e-3,
+  // then mean SJ higher
+  auto better_than = [on_reference_tolerance](const Hexahedral_mesh_quality& q1, const Hexahedral_mesh_quality& q2) {
+    if(q1.non_positive != q2.non_positive) return q1.non_positive < q2.non_positive;
+    const bool on1 = q1.max_constraint_distance <= on_reference_tolerance;
+    const bool on2 = q2.max_constraint_distance <= on_reference_tolerance;
+    if(on1 != on2) return on1;
+    if(std::abs(q1.min_scaled_jacobian - q2.min_scaled_jacobian) > 1e-3)
+      return q1.min_scaled_jacobian > q2.min_scaled_jacobian;
+    return q1.mean_scaled_jacobian > q2.mean_scaled_jacobian;
+  };
   auto better = [&](const Hexahedral_mesh_quality& q) {
     if(!(q.min_scaled_jacobian >= report.before.min_scaled_jacobian)) return false;
-    if(!have_candidate) return true;
-    if(q.non_positive != best_quality.non_positive) return q.non_positive < best_quality.non_positive;
-    const bool on = q.max_constraint_distance <= on_reference_tolerance;
-    const bool best_on = best_quality.max_constraint_distance <= on_reference_tolerance;
-    if(on != best_on) return on;
-    return q.mean_scaled_jacobian > best_quality.mean_scaled_jacobian;
+    return !have_candidate || better_than(q, best_quality);
   };
   auto offer = [&](const Hexahedral_mesh_quality& q, int state) {
     if(!better(q)) return false;
@@ -399,17 +405,35 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
   }
 
   internal::Foldover_free_options options;
-  options.max_outer_iterations = 30;
+  // rounds need not converge: the next round re-linearizes anyway
+  options.max_outer_iterations = 10;
+  options.max_inner_iterations = 300;
   // more weight on the shape (scale-invariant) term than for the untangling: quality, not size
   options.theta = 0.2;
   for(int round = 1; round <= iterations; ++round) {
     const std::vector<Point> previous = work.points;
     minimize(false, options);
-    internal::project_on_reference(work.points, constraints, projector);
-    const Hexahedral_mesh_quality q = internal::hex_mesh_quality(work, constraints, projector);
+    const std::vector<Point> target = work.points;
+    // the projection may spoil what the linearized slide gained: try shorter steps towards the
+    // optimum as well (each projected) and go on from the best of them
+    std::vector<Point> round_best;
+    Hexahedral_mesh_quality round_quality;
+    for(int k = 0; k < 4; ++k) {
+      const double alpha = std::ldexp(1., -k);
+      for(std::size_t v = 0; v < V; ++v)
+        work.points[v] = k == 0 ? target[v] : previous[v] + alpha * (target[v] - previous[v]);
+      internal::project_on_reference(work.points, constraints, projector);
+      const Hexahedral_mesh_quality q = internal::hex_mesh_quality(work, constraints, projector);
+      if(k == 0 || better_than(q, round_quality)) {
+        round_quality = q;
+        round_best = work.points;
+      }
+      if(q.non_positive == 0 && q.min_scaled_jacobian >= best_quality.min_scaled_jacobian) break;
+    }
+    work.points = round_best;
     report.rounds = round;
-    const bool accepted = offer(q, round);
-    visitor.after_round(round, q, accepted);
+    const bool accepted = offer(round_quality, round);
+    visitor.after_round(round, round_quality, accepted);
     double moved = 0;
     for(std::size_t v = 0; v < V; ++v) moved = (std::max)(moved, CGAL::squared_distance(previous[v], work.points[v]));
     if(std::sqrt(moved) <= on_reference_tolerance) break;
