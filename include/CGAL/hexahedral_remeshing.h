@@ -5,8 +5,8 @@
 #define CGAL_HEXAHEDRAL_REMESHING_H
 
 /// \file hexahedral_remeshing.h
-/// Umbrella header of the Hexahedral_remeshing package: includes every public header. The whole
-/// frame-field pipeline is `CGAL::Hexahedral_remeshing::compute_frame_field_pipeline()`.
+/// The entry point of the package, `CGAL::hexahedral_remeshing()`: from tetrahedra (or a CGAL
+/// C3t3, or a closed surface) to hexahedra in one call. Includes every public header.
 
 #include <CGAL/Hexahedral_remeshing/Hexahedral_remeshing_traits_3.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
@@ -35,5 +35,120 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_boundary.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_polylines.h>
+
+#include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/Integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_to_lcc.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_remeshing_result.h>
+#include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/IO/read_HexEx.h>
+#include <CGAL/Hexahedral_remeshing/IO/read_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_HexEx.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/run_pipeline.h>
+
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+template <class T> struct Is_tetrahedral_mesh : std::false_type {};
+template <class Traits> struct Is_tetrahedral_mesh<Tetrahedral_mesh_3<Traits> > : std::true_type {};
+// A C3t3 (`Mesh_complex_3_in_triangulation_3`) is recognized by its cells in the complex.
+template <class T, class = void> struct Is_c3t3 : std::false_type {};
+template <class T>
+struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex_begin())> > : std::true_type {};
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Remeshes a solid with hexahedra by the method of Desobry et al. (*Frame Fields with Prescribed
+/// Boundary Singularity Graph for Hexahedral Meshing*): boundary edge valences (heuristic or
+/// prescribed) -> boundary direction constraints (Alg. 1 and 2) -> smooth frame field -> matchings and
+/// singularity graph -> realignment with the normals (Sec. 3.3) -> seamless integer-grid map (Sec. 3.4)
+/// -> hex extraction (HexEx, Lyon et al. 2016) -> untangling and smoothing -> check.
+///
+/// \tparam Input `Hexahedral_remeshing::Tetrahedral_mesh_3<Traits>`, a CGAL
+///         `Mesh_complex_3_in_triangulation_3` (its cells, surface patches, feature curves and corners;
+///         converted with `tetrahedral_soup_from_c3t3()`), or a closed triangulated surface model of
+///         `FaceListGraph` such as `CGAL::Surface_mesh` (tetrahedralized with TetGen,
+///         `tetrahedralize_surface()`). C3t3 and surfaces are built with `split_boundary_chords(true)`.
+/// \tparam Output `Hexahedral_remeshing::Hexahedral_mesh_3`, or a CGAL
+///         `Linear_cell_complex_for_combinatorial_map<3>` (filled by `hexahedral_mesh_to_lcc()`).
+/// \param input the solid
+/// \param output receives the hex mesh (cleared first); when the status is `NO_HEXAHEDRA` it is empty.
+/// \param np an optional sequence of named parameters: those of `compute_frame_field_pipeline()`
+///        (`valence_heuristic`, `prescribed_edge_valences`, `baseline`, `face_weights`, ...), of
+///        `compute_integer_grid_map()` (`maximum_stiffening_iterations`, `untangling`), of
+///        `tetrahedralize_surface()` for a surface input, and:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{target_edge_length}
+///     \cgalParamDescription{hex edge length in model units}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{from `number_of_hexahedra`, else the default of `compute_integer_grid_map()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_hexahedra}
+///     \cgalParamDescription{approximate number of hexahedra: the edge length is `cbrt(volume / n)`}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{unused}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{hexahedral_smoothing}
+///     \cgalParamDescription{untangle and smooth the extracted mesh (`smooth_hexahedral_mesh()`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress hooks of every stage}
+///     \cgalParamType{a class with the member functions of `Hexahedral_remeshing::Hexahedral_remeshing_visitor`}
+///     \cgalParamDefault{`Hexahedral_remeshing::Hexahedral_remeshing_visitor()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns the report of every stage, their seconds and one overall status: `OK` for a valid hex mesh
+///          (conforming, manifold boundary, every scaled Jacobian > 0), `INVALID_HEX_MESH` when a mesh
+///          was produced but is not valid, `NO_HEXAHEDRA` when the map has no complete cell; `message`
+///          says why in one line.
+/// \throws Hexahedral_remeshing::Input_error for a defective input (an invalid C3t3 or surface, an
+///         impossible prescription, a non-positive target edge length); Hexahedral_remeshing::Error if a
+///         stage cannot run.
+template <class Input, class Output, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Hexahedral_remeshing::Hexahedral_remeshing_result
+hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  namespace HR = Hexahedral_remeshing;
+  if constexpr(!std::is_same<Output, HR::Hexahedral_mesh_3>::value) {
+    HR::Hexahedral_mesh_3 hexes;
+    HR::Hexahedral_remeshing_result r = hexahedral_remeshing(input, hexes, np);
+    output.clear();
+    HR::hexahedral_mesh_to_lcc(hexes, output);
+    return r;
+  } else if constexpr(HR::internal::Is_tetrahedral_mesh<Input>::value) {
+    return HR::internal::run_hexahedral_remeshing(input, output, np);
+  } else {
+    typedef std::chrono::steady_clock Clock;
+    const auto start = Clock::now();
+    typedef HR::Tetrahedral_mesh_3<> Mesh;
+    HR::Tetrahedral_soup_3<Mesh::Point_3> soup;
+    if constexpr(HR::internal::Is_c3t3<Input>::value)
+      HR::tetrahedral_soup_from_c3t3(input, soup);
+    else
+      HR::tetrahedralize_surface(input, soup, np);
+    Mesh mesh;
+    HR::build_tetrahedral_mesh(soup, mesh, HR::parameters::split_boundary_chords(true));
+    const double preprocessing = std::chrono::duration<double>(Clock::now() - start).count();
+    HR::Hexahedral_remeshing_result r = HR::internal::run_hexahedral_remeshing(mesh, output, np);
+    r.preprocessing_seconds = preprocessing;
+    r.seconds += preprocessing;
+    return r;
+  }
+}
+
+} // namespace CGAL
 
 #endif // CGAL_HEXAHEDRAL_REMESHING_H

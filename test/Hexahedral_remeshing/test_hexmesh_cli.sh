@@ -174,5 +174,52 @@ expect_error 5 "cc.perm: cannot rename" frames "$n13c" --no-realign --quiet "${o
 "$hexmesh" frames "$data/cube.off" --no-realign > "$tmp/out" 2> "$tmp/err" || fail "frames on cube.off exit code $?"
 grep -q "edges below 45 degrees: none$" "$tmp/out" || fail "frames summary on the cube: $(grep 'below 45' "$tmp/out")"
 
+# extract: a map shipped with the tests (two unit cubes side by side), the summary, the JSON report, the
+# MEDIT and VTK hex files; non-integer-grid and broken maps refused with one line and no output
+hexex="$root/test/Hexahedral_remeshing/data/hexex"
+"$hexmesh" extract "$hexex/two_cubes.hexex" --out "$tmp/two.mesh" --json "$tmp/two.json" > "$tmp/out" 2> "$tmp/err" \
+  || fail "extract exit code $?: $(cat "$tmp/err")"
+grep -q "hex mesh            2 hexahedra, 12 vertices, valid" "$tmp/out" || fail "extract summary: $(cat "$tmp/out")"
+[ "$(awk 'f && NF {print $1; exit} /^[ \t]*Hexahedra[ \t]*$/ {f=1}' "$tmp/two.mesh")" = "2" ] || fail "extract MEDIT file lacks 2 Hexahedra"
+python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['hex_mesh']['hexahedra'] == 2 and r['hex_mesh']['valid'] and r['hex_mesh']['min_scaled_jacobian'] > 0.999
+assert r['extraction']['status'] == 'OK'
+" "$tmp/two.json" || fail "extract JSON: $(cat "$tmp/two.json")"
+"$hexmesh" extract "$hexex/two_cubes.hexex" --out "$tmp/two.vtk" --quiet > "$tmp/out" 2>&1 || fail "extract --out .vtk exit code $?"
+grep -q "^CELL_TYPES 2" "$tmp/two.vtk" && [ ! -s "$tmp/out" ] || fail "extract VTK output or --quiet"
+mkdir -p "$tmp/x"
+expect_error 3 "not an integer-grid map: face .* not an integer translation" extract "$hexex/non_integer_jump.hexex" --out "$tmp/x/a.mesh"
+expect_error 3 "truncated.hexex:8: unexpected end of file" extract "$hexex/truncated.hexex" --out "$tmp/x/a.mesh"
+expect_error 3 "non-finite number" extract "$hexex/nan.hexex" --out "$tmp/x/a.mesh" --json "$tmp/x/a.json"
+expect_error 2 "needs --out" extract "$hexex/two_cubes.hexex"
+expect_error 2 "written as .mesh" extract "$hexex/two_cubes.hexex" --out "$tmp/x/a.obj"
+[ -z "$(ls -A "$tmp/x")" ] || fail "failed extract runs left files behind: $(ls "$tmp/x")"
+
+# parametrize then extract, and remesh in one call, on the cube (no singularity: N^3 hexahedra)
+"$hexmesh" parametrize "$data/cube.off" --max-volume 0.002 --target-edge-length 0.25 --hexex "$tmp/cube.hexex" \
+  --vtk "$tmp/cube_map.vtk" --json "$tmp/cube_map.json" > "$tmp/out" 2> "$tmp/err" || fail "parametrize exit code $?: $(cat "$tmp/err")"
+grep -q "integer-grid map    OK" "$tmp/out" && grep -q "map check           integer-grid" "$tmp/out" \
+  || fail "parametrize summary: $(cat "$tmp/out")"
+grep -q "POINT_DATA" "$tmp/cube_map.vtk" && grep -q "uvw" "$tmp/cube_map.vtk" || fail "parametrize --vtk lacks uvw"
+"$hexmesh" extract "$tmp/cube.hexex" --out "$tmp/cube_hex.mesh" > "$tmp/out" 2>&1 || fail "extract of the parametrized cube: $(cat "$tmp/out")"
+grep -q "hex mesh            64 hexahedra, 125 vertices, valid" "$tmp/out" || fail "parametrize + extract cube: $(cat "$tmp/out")"
+"$hexmesh" remesh "$data/cube.off" --max-volume 0.002 --hexahedra 27 --out "$tmp/cube_remesh.vtk" --json "$tmp/remesh.json" \
+  > "$tmp/out" 2> "$tmp/err" || fail "remesh exit code $?: $(cat "$tmp/err")"
+grep -q "tetrahedra -> 27 hexahedra (OK)" "$tmp/out" || fail "remesh summary: $(cat "$tmp/out")"
+grep -q "36/36 hex edges on sharp edges with the prescribed valence; 100.0% of the sharp-edge length" "$tmp/out" \
+  || fail "remesh feature line: $(grep features "$tmp/out")"
+python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['status'] == 'OK' and r['hex_mesh']['hexahedra'] == 27 and r['hex_mesh']['valid']
+assert abs(r['integer_grid_map']['target_edge_length'] - 1 / 3) < 1e-9
+for k in ('frame_field', 'integer_grid_map', 'extraction', 'smoothing', 'hex_mesh', 'features', 'seconds'): assert k in r, k
+" "$tmp/remesh.json" || fail "remesh JSON: $(cat "$tmp/remesh.json")"
+expect_error 2 "either --target-edge-length or --hexahedra" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --hexahedra 8 --target-edge-length 0.5
+expect_error 2 "expects a positive length" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --target-edge-length -1
+[ -z "$(ls -A "$tmp/x")" ] || fail "failed remesh runs left files behind: $(ls "$tmp/x")"
+
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"

@@ -15,6 +15,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_remeshing_result.h>
 #include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
 
 #include <iomanip>
@@ -33,20 +34,6 @@ inline std::vector<std::string> parametrize_options()
 }
 
 inline std::vector<std::string> parametrize_flags() { return {"baseline", "no-chord-split", "quiet"}; }
-
-inline const char* integer_grid_map_status_name(CGAL::Hexahedral_remeshing::Integer_grid_map_status s)
-{
-  typedef CGAL::Hexahedral_remeshing::Integer_grid_map_status S;
-  switch(s) {
-    case S::OK: return "OK";
-    case S::DEGENERATE_TETRAHEDRA: return "DEGENERATE_TETRAHEDRA";
-    case S::INVERTED_TETRAHEDRA: return "INVERTED_TETRAHEDRA";
-    case S::NON_MESHABLE_SINGULARITIES: return "NON_MESHABLE_SINGULARITIES";
-    case S::INCONSISTENT_MATCHINGS: return "INCONSISTENT_MATCHINGS";
-    case S::SOLVER_FAILURE: return "SOLVER_FAILURE";
-  }
-  return "UNKNOWN";
-}
 
 // The --target-edge-length option: a positive number of model units, 0 when absent (default size).
 inline double target_edge_length_option(const Arguments& args)
@@ -91,7 +78,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
                                  const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
 {
   json.begin("integer_grid_map")
-      .value("status", integer_grid_map_status_name(m.status))
+      .value("status", CGAL::Hexahedral_remeshing::status_name(m.status))
       .value("target_edge_length", m.target_edge_length)
       .value("inverted_tetrahedra", m.inverted_tetrahedra)
       .value("degenerate_tetrahedra", m.degenerate_tetrahedra)
@@ -126,7 +113,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
 inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
                                    const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
 {
-  out << "  integer-grid map    " << integer_grid_map_status_name(m.status) << ": hex edge " << m.target_edge_length
+  out << "  integer-grid map    " << CGAL::Hexahedral_remeshing::status_name(m.status) << ": hex edge " << m.target_edge_length
       << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, min det J "
       << std::setprecision(3) << m.min_relative_jacobian << std::defaultfloat << " of the target; " << m.integer_variables
       << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
@@ -221,7 +208,7 @@ inline int command_parametrize(const Arguments& args)
     if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
   }
   if(m.status != HR::Integer_grid_map_status::OK)
-    std::cerr << "hexmesh: warning: " << in << ": integer-grid map status " << integer_grid_map_status_name(m.status)
+    std::cerr << "hexmesh: warning: " << in << ": integer-grid map status " << CGAL::Hexahedral_remeshing::status_name(m.status)
               << " (" << m.inverted_tetrahedra << " inverted, " << m.degenerate_tetrahedra << " degenerate tetrahedra, "
               << m.defects.size() << " non-meshable singularities)\n";
   return EXIT_OK;

@@ -9,6 +9,7 @@
 #include "command_frames.h"
 #include "command_extract.h"
 #include "command_parametrize.h"
+#include "command_remesh.h"
 
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
@@ -51,6 +52,18 @@ const char* usage =
   "                            threads; --quiet: no summary nor progress (warnings remain).\n"
   "                            On a busy machine, OMP_WAIT_POLICY=PASSIVE (environment) avoids\n"
   "                            OpenMP threads spinning while they wait.\n"
+  "  remesh IN --out OUT.mesh|OUT.vtk [--target-edge-length H | --hexahedra N]\n"
+  "         [--heuristic NAME] [--valences FILE] [--baseline] [--no-smoothing] [--frames F]\n"
+  "         [--singularities F] [--json FILE] [--keep-partial] [--no-chord-split] [--threads N] [--quiet]\n"
+  "                            tetrahedra to hexahedra in one call: the frame-field pipeline (as\n"
+  "                            for frames), the integer-grid map, the extraction, untangling and\n"
+  "                            smoothing (unless --no-smoothing), the check. H: hex edge length in\n"
+  "                            model units; N: approximate number of hexahedra. Prints hexahedra,\n"
+  "                            scaled Jacobian, irregular edges, hex edges on sharp edges with the\n"
+  "                            prescribed valence, feature coverage, Hausdorff distance, seconds.\n"
+  "                            --baseline: the classic normal-aligned field (the paper's\n"
+  "                            comparison). If the hex mesh is not valid (or empty) the command\n"
+  "                            exits 4 with the reason and writes no hex mesh, unless --keep-partial.\n"
   "  parametrize IN --hexex OUT.hexex [--vtk OUT.vtk] [--json FILE] [--valences-out FILE]\n"
   "         [--target-edge-length H] [--heuristic NAME] [--valences FILE] [--baseline]\n"
   "         [--no-chord-split] [--threads N] [--quiet]\n"
@@ -95,6 +108,8 @@ int main(int argc, char** argv)
     if(command == "frames")
       return hexmesh::command_frames(
         hexmesh::Arguments(argc, argv, 2, hexmesh::frames_options(), hexmesh::frames_flags()));
+    if(command == "remesh")
+      return hexmesh::command_remesh(hexmesh::Arguments(argc, argv, 2, hexmesh::remesh_options(), hexmesh::remesh_flags()));
     if(command == "parametrize")
       return hexmesh::command_parametrize(
         hexmesh::Arguments(argc, argv, 2, hexmesh::parametrize_options(), hexmesh::parametrize_flags()));

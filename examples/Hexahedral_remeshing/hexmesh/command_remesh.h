@@ -1,0 +1,182 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+//
+// hexmesh remesh IN --out OUT.{mesh,vtk} [--target-edge-length H | --hexahedra N] [--heuristic NAME]
+//                [--valences F] [--baseline] [--no-smoothing] [--frames F] [--singularities F] [--json F]
+//                [--keep-partial] [--threads N] [--quiet]
+// The whole pipeline in one call, CGAL::hexahedral_remeshing(): tetrahedra in, hexahedra out.
+#ifndef HEXMESH_COMMAND_REMESH_H
+#define HEXMESH_COMMAND_REMESH_H
+
+#include "cli_common.h"
+#include "command_extract.h"
+#include "command_frames.h"
+#include "command_parametrize.h"
+
+#include <CGAL/hexahedral_remeshing.h>
+
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace hexmesh {
+
+inline std::vector<std::string> remesh_options()
+{
+  std::vector<std::string> options = input_options();
+  for(const char* o : {"out", "heuristic", "valences", "frames", "singularities", "json", "target-edge-length",
+                       "hexahedra", "threads"})
+    options.push_back(o);
+  return options;
+}
+
+inline std::vector<std::string> remesh_flags() { return {"baseline", "no-smoothing", "no-chord-split", "keep-partial", "quiet"}; }
+
+inline int command_remesh(const Arguments& args)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  typedef Mesh::Index Index;
+  if(args.positional().size() != 1) throw Usage_error("remesh expects one input file");
+  const std::string& in = args.positional()[0];
+  const Frame_field_options options = frame_field_options(args);
+  const std::string out = hex_output_option(args, "remesh");
+  const double target = target_edge_length_option(args);
+  if(args.has("target-edge-length") && args.has("hexahedra"))
+    throw Usage_error("give either --target-edge-length or --hexahedra, not both");
+  const std::size_t hexahedra = args.has("hexahedra") ? std::size_t(args.integer("hexahedra", 0, 1, 100000000)) : 0;
+  Output_files outputs;
+  outputs.add(out);
+  for(const char* o : {"frames", "singularities", "json"})
+    if(args.has(o)) outputs.add(args.value(o));
+
+  Progress progress(options.quiet);
+  Mesh mesh;
+  std::vector<std::pair<Index, int> > prescribed;
+  const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
+
+  Frames_progress_visitor visitor(progress);
+  HR::Hexahedral_mesh_3 hexes;
+  HR::Hexahedral_remeshing_result r;
+  // the size is the tail of the parameter chain: --target-edge-length, else --hexahedra, else the default
+  auto run = [&](const auto& size) {
+    return CGAL::hexahedral_remeshing(
+      mesh, hexes,
+      HP::valence_heuristic(options.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
+        HP::baseline(options.baseline, HP::realignment(options.realign,
+        HP::hexahedral_smoothing(!args.has("no-smoothing"), size))))).visitor(std::ref(visitor)));
+  };
+  try {
+    if(target > 0) r = run(HP::target_edge_length(target));
+    else r = run(HP::number_of_hexahedra(hexahedra));
+  } catch(const HR::Input_error&) {
+    throw;
+  } catch(const std::exception& e) {
+    throw Stage_error(std::string("remeshing of ") + in + ": " + e.what());
+  }
+  const bool ok = r.status == HR::Hexahedral_remeshing_status::OK;
+  const bool write_hexes = ok || (args.has("keep-partial") && hexes.number_of_hexahedra() > 0);
+
+  progress.start("writing the outputs");
+  if(write_hexes) outputs.write({out}, [&] { HR::IO::write_hexahedral_mesh(out, hexes); });
+  if(args.has("frames")) {
+    const std::string f = args.value("frames");
+    outputs.write({f}, [&] { HR::IO::write_VTK_frame_field(f, mesh, r.frame_field.frames); });
+  }
+  if(args.has("singularities")) {
+    const std::string f = args.value("singularities");
+    outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, r.frame_field.singularities); });
+  }
+  if(args.has("json")) {
+    const HR::Frame_field_pipeline_result& f = r.frame_field;
+    Json json;
+    json.begin().value("input", in).value("output", write_hexes ? out : std::string()).value("status", HR::status_name(r.status))
+        .value("message", r.message).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra);
+    json.begin("frame_field")
+        .value("energy", f.frame_field.energy)
+        .value("E_initial", f.constraints.initial_energy)
+        .value("E_final", f.constraints.final_energy)
+        .value("valence3_curves", f.singularities.number_of_curves(3))
+        .value("valence5_curves", f.singularities.number_of_curves(5))
+        .value("improper_edges", f.singularities.improper_edges)
+        .value("boundary_valences_total", f.boundary_valences.total)
+        .value("boundary_valences_matched", f.boundary_valences.matched)
+        .end();
+    add_integer_grid_map(json, r.map, r.map_check);
+    json.begin("extraction")
+        .value("hexahedra", r.extraction.hexahedra)
+        .value("degenerate_tetrahedra", r.extraction.degenerate_tetrahedra)
+        .value("inverted_tetrahedra", r.extraction.inverted_tetrahedra)
+        .value("incomplete_cells", r.extraction.incomplete_cells)
+        .end();
+    json.begin("smoothing")
+        .value("performed", r.smoothed)
+        .value("min_scaled_jacobian_before", r.smoothing.before.min_scaled_jacobian)
+        .value("min_scaled_jacobian_after", r.smoothing.after.min_scaled_jacobian)
+        .value("mean_scaled_jacobian_before", r.smoothing.before.mean_scaled_jacobian)
+        .value("mean_scaled_jacobian_after", r.smoothing.after.mean_scaled_jacobian)
+        .value("seconds", r.smoothing.seconds)
+        .end();
+    add_hexahedral_mesh_check(json, r.check);
+    json.begin("features")
+        .value("length", r.feature_length)
+        .value("coverage", r.feature_coverage)
+        .value("hex_feature_edges", r.hex_feature_edges)
+        .value("hex_feature_edges_with_prescribed_valence", r.hex_feature_edges_with_prescribed_valence)
+        .value("relative_hausdorff_distance", r.relative_hausdorff_distance)
+        .end();
+    json.begin("seconds")
+        .value("read", read_seconds)
+        .value("frame_field", f.seconds)
+        .value("map", r.map.seconds)
+        .value("extraction", r.extraction.seconds)
+        .value("smoothing", r.smoothing.seconds)
+        .value("check", r.check_seconds)
+        .value("total", r.seconds)
+        .end();
+    json.end();
+    const std::string j = args.value("json");
+    outputs.write({j}, [&] { json.write(j); });
+  }
+  progress.finish();
+
+  if(!options.quiet) {
+    const HR::Frame_field_pipeline_result& f = r.frame_field;
+    std::cout << in << ": " << r.tetrahedra << " tetrahedra -> " << hexes.number_of_hexahedra() << " hexahedra ("
+              << HR::status_name(r.status) << ")" << (options.baseline ? ", normal-aligned baseline" : "") << "\n"
+              << "  frame field         " << f.singularities.number_of_curves(3) << " valence-3 and "
+              << f.singularities.number_of_curves(5) << " valence-5 singular curves, " << f.singularities.improper_edges
+              << " improper edges; boundary valences of the field " << f.boundary_valences.matched << "/"
+              << f.boundary_valences.total << " as prescribed\n";
+    print_integer_grid_map(std::cout, r.map, r.map_check);
+    if(hexes.number_of_hexahedra() > 0) {
+      print_hexahedral_mesh_check(std::cout, r.check);
+      std::cout << "  features            " << r.hex_feature_edges_with_prescribed_valence << "/" << r.hex_feature_edges
+                << " hex edges on sharp edges with the prescribed valence; " << std::fixed << std::setprecision(1)
+                << 100 * r.feature_coverage << "% of the sharp-edge length on hex edges; Hausdorff distance "
+                << std::scientific << std::setprecision(2) << r.relative_hausdorff_distance << " of the diagonal\n"
+                << std::defaultfloat;
+      if(r.smoothed)
+        std::cout << std::fixed << std::setprecision(3) << "  smoothing           min scaled Jacobian "
+                  << r.smoothing.before.min_scaled_jacobian << " -> " << r.smoothing.after.min_scaled_jacobian << ", mean "
+                  << r.smoothing.before.mean_scaled_jacobian << " -> " << r.smoothing.after.mean_scaled_jacobian << "\n"
+                  << std::defaultfloat;
+    }
+    std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", frame field "
+              << f.seconds << ", map " << r.map.seconds << ", extraction " << r.extraction.seconds << ", smoothing "
+              << r.smoothing.seconds << ", check " << r.check_seconds << ", total " << r.seconds << "\n" << std::defaultfloat;
+    if(write_hexes) std::cout << "  hex mesh            " << out << (ok ? "" : " (partial: --keep-partial)") << "\n";
+    if(args.has("frames")) std::cout << "  ParaView            " << args.value("frames") << " (frames: Glyph on frame_u, frame_v, frame_w)\n";
+    if(args.has("singularities")) std::cout << "  ParaView            " << args.value("singularities") << " (singular curves)\n";
+    if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
+  }
+  if(!ok) throw Stage_error(in + ": " + HR::status_name(r.status) + ": " + r.message +
+                            (write_hexes ? " (partial mesh written)" : " (no hex mesh written)"));
+  return EXIT_OK;
+}
+
+} // namespace hexmesh
+
+#endif // HEXMESH_COMMAND_REMESH_H

@@ -1,0 +1,131 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_REMESHING_RESULT_H
+#define CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_REMESHING_RESULT_H
+
+#include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
+#include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+namespace internal_np {
+enum number_of_hexahedra_t { number_of_hexahedra };
+enum hexahedral_smoothing_t { hexahedral_smoothing };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// `hexahedral_remeshing()`: approximate number of hexahedra wanted (`std::size_t`); sets the target edge
+/// length to `cbrt(volume / n)` unless `target_edge_length` is given.
+template <class T> unspecified_type number_of_hexahedra(const T& value);
+/// `hexahedral_remeshing()`: untangle and smooth the extracted hex mesh (`bool`, default `true`).
+template <class T> unspecified_type hexahedral_smoothing(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(number_of_hexahedra)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(hexahedral_smoothing)
+#endif
+} // namespace parameters
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Overall outcome of `CGAL::hexahedral_remeshing()`.
+enum class Hexahedral_remeshing_status {
+  /// A valid hex mesh: conforming, closed 2-manifold boundary, no duplicates, every scaled Jacobian > 0.
+  OK,
+  /// A hex mesh was produced but it is not valid (inverted hexahedra, or cells missing where the map is
+  /// broken): see `Hexahedral_remeshing_result::check` and the stage reports.
+  INVALID_HEX_MESH,
+  /// The integer-grid map has no complete integer cell: no hexahedron (the map status says why).
+  NO_HEXAHEDRA
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Name of a status (`"OK"`, `"INVALID_HEX_MESH"`, `"NO_HEXAHEDRA"`).
+inline const char* status_name(Hexahedral_remeshing_status s)
+{
+  switch(s) {
+    case Hexahedral_remeshing_status::OK: return "OK";
+    case Hexahedral_remeshing_status::INVALID_HEX_MESH: return "INVALID_HEX_MESH";
+    case Hexahedral_remeshing_status::NO_HEXAHEDRA: return "NO_HEXAHEDRA";
+  }
+  return "UNKNOWN";
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Name of an integer-grid map status (`"OK"`, `"INVERTED_TETRAHEDRA"`, ...), as the enumerator is spelled.
+inline const char* status_name(Integer_grid_map_status s)
+{
+  typedef Integer_grid_map_status S;
+  switch(s) {
+    case S::OK: return "OK";
+    case S::DEGENERATE_TETRAHEDRA: return "DEGENERATE_TETRAHEDRA";
+    case S::INVERTED_TETRAHEDRA: return "INVERTED_TETRAHEDRA";
+    case S::NON_MESHABLE_SINGULARITIES: return "NON_MESHABLE_SINGULARITIES";
+    case S::INCONSISTENT_MATCHINGS: return "INCONSISTENT_MATCHINGS";
+    case S::SOLVER_FAILURE: return "SOLVER_FAILURE";
+  }
+  return "UNKNOWN";
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Default visitor of `CGAL::hexahedral_remeshing()`: the hooks of `Frame_field_visitor`, called for the
+/// stages of every step: those of `compute_frame_field_pipeline()`, those of `compute_integer_grid_map()`,
+/// those of `extract_hexahedra()`, then `"hex smoothing"` and `"check"`.
+struct Hexahedral_remeshing_visitor : Frame_field_pipeline_visitor
+{
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Everything `CGAL::hexahedral_remeshing()` computes, stage by stage.
+struct Hexahedral_remeshing_result
+{
+  /// Overall status.
+  Hexahedral_remeshing_status status = Hexahedral_remeshing_status::NO_HEXAHEDRA;
+  /// One line saying what went wrong (empty when `status` is `OK`).
+  std::string message;
+  /// Tetrahedra of the mesh the pipeline ran on (after the preprocessing of the input).
+  std::size_t tetrahedra = 0;
+  /// Valences, constraints, frame field, matchings, singularity graph, realignment.
+  Frame_field_pipeline_result frame_field;
+  /// Report of the integer-grid map (target edge length used, status, inverted tetrahedra, ...).
+  Integer_grid_map_result map;
+  /// Independent check of the map from its parameters (edge valences from angle sums, ...).
+  Integer_grid_map_check map_check;
+  /// Report of the extraction.
+  Hexahedral_extraction_result extraction;
+  /// True if the hex mesh was untangled and smoothed.
+  bool smoothed = false;
+  /// Report of the smoothing (quality before and after, Hausdorff distance to the input boundary).
+  Hexahedral_smoothing_report smoothing;
+  /// Check of the final hex mesh (conformity, manifoldness, scaled Jacobian, irregular edges).
+  Hexahedral_mesh_check check;
+  /// Length of the sharp edges of the input (feature curves and edges of prescribed valence other than 2).
+  double feature_length = 0;
+  /// Share (0..1) of `feature_length` covered by boundary hex edges lying along the sharp edges.
+  double feature_coverage = 0;
+  /// Boundary hex edges lying along sharp edges, and how many of them have the prescribed valence
+  /// (number of hexahedra around them).
+  std::size_t hex_feature_edges = 0;
+  /// Hex feature edges with the prescribed valence.
+  std::size_t hex_feature_edges_with_prescribed_valence = 0;
+  /// Approximate Hausdorff distance between the hex boundary and the input boundary over the bounding
+  /// box diagonal (-1 if the smoothing did not run: it computes it).
+  double relative_hausdorff_distance = -1;
+  /// Seconds of the preprocessing of a C3t3 or surface input (0 for a `Tetrahedral_mesh_3`).
+  double preprocessing_seconds = 0;
+  /// Seconds of the check and the feature measures.
+  double check_seconds = 0;
+  /// Seconds of the whole call.
+  double seconds = 0;
+};
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_REMESHING_RESULT_H

@@ -1,0 +1,122 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_REMESHING_RUN_PIPELINE_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_REMESHING_RUN_PIPELINE_H
+
+#include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_remeshing_result.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/feature_fidelity.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+template <class Traits>
+double tetrahedral_mesh_volume(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  double v = 0;
+  for(std::size_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+    const auto& tv = mesh.tetrahedron_vertices(typename Tetrahedral_mesh_3<Traits>::Index(t));
+    v += CGAL::to_double(CGAL::volume(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3])));
+  }
+  return v;
+}
+
+template <class Traits>
+double bounding_box_diagonal(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  if(mesh.number_of_vertices() == 0) return 0;
+  const CGAL::Bbox_3 b = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+}
+
+// The paper's pipeline on a tetrahedral mesh: frame field (valences, constraints, field, matchings,
+// realignment) -> integer-grid map -> extraction -> untangling and smoothing -> check. Data flows forward:
+// each stage reads only the outputs of the stages before it.
+template <class Traits, class NamedParameters>
+Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& hexes,
+                                                     const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  typedef std::chrono::steady_clock Clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  Hexahedral_remeshing_visitor default_visitor;
+  auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  const auto start = Clock::now();
+
+  Hexahedral_remeshing_result r;
+  hexes.clear();
+  r.tetrahedra = mesh.number_of_tetrahedra();
+  r.frame_field = compute_frame_field_pipeline(mesh, np);
+
+  // Hex size: target_edge_length, else number_of_hexahedra, else the map's own default.
+  double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), 0.);
+  const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_hexahedra), std::size_t(0)));
+  if(!(h > 0) && n > 0) h = std::cbrt(tetrahedral_mesh_volume(mesh) / n);
+  Integer_grid_map map;
+  if(h > 0)
+    r.map = compute_integer_grid_map(mesh, r.frame_field.frames, r.frame_field.matchings, r.frame_field.singularities,
+                                     map, parameters::target_edge_length(h, np));
+  else
+    r.map = compute_integer_grid_map(mesh, r.frame_field.frames, r.frame_field.matchings, r.frame_field.singularities,
+                                     map, np);
+  r.map_check = check_integer_grid_map(map);
+  r.extraction = extract_hexahedra(map, hexes, np);
+  if(hexes.number_of_hexahedra() == 0) {
+    r.status = Hexahedral_remeshing_status::NO_HEXAHEDRA;
+    r.message = std::string("the integer-grid map (status ") + status_name(r.map.status) +
+                ", " + std::to_string(r.map.inverted_tetrahedra) + " inverted tetrahedra) has no complete integer cell";
+    r.seconds = seconds_since(start);
+    return r;
+  }
+
+  if(choose_parameter(get_parameter(np, internal_np::hexahedral_smoothing), true)) {
+    visitor.start_stage("hex smoothing");
+    const auto t = Clock::now();
+    r.smoothing = smooth_hexahedral_mesh(hexes, make_hexahedral_smoothing_reference(mesh));
+    r.smoothed = true;
+    visitor.end_stage("hex smoothing", seconds_since(t));
+  }
+
+  visitor.start_stage("check");
+  const auto t = Clock::now();
+  r.check = check_hexahedral_mesh(hexes);
+  const double diagonal = bounding_box_diagonal(mesh);
+  const Feature_fidelity f = measure_feature_fidelity(mesh, r.frame_field.valences, hexes, 1e-6 * diagonal);
+  r.feature_length = f.feature_length;
+  r.feature_coverage = f.feature_length > 0 ? f.covered_length / f.feature_length : 1.;
+  r.hex_feature_edges = f.hex_feature_edges;
+  r.hex_feature_edges_with_prescribed_valence = f.valence_matched;
+  if(r.smoothed && r.smoothing.after.hausdorff_distance >= 0 && diagonal > 0)
+    r.relative_hausdorff_distance = r.smoothing.after.hausdorff_distance / diagonal;
+  r.check_seconds = seconds_since(t);
+  visitor.end_stage("check", r.check_seconds);
+
+  if(r.check.valid) {
+    r.status = Hexahedral_remeshing_status::OK;
+  } else {
+    r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
+    r.message = std::to_string(r.check.inverted_hexahedra) + " inverted hexahedra (min scaled Jacobian " +
+                std::to_string(r.check.min_scaled_jacobian) + "), " + std::to_string(r.check.non_conforming_quads) +
+                " non-conforming quads, " + std::to_string(r.extraction.incomplete_cells) +
+                " incomplete cells left out; integer-grid map status " + status_name(r.map.status);
+  }
+  r.seconds = seconds_since(start);
+  return r;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_REMESHING_RUN_PIPELINE_H

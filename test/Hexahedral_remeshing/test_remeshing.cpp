@@ -1,0 +1,161 @@
+// Tests of the one call from tetrahedra to hexahedra, CGAL::hexahedral_remeshing(): inputs (our
+// Tetrahedral_mesh_3, a closed Surface_mesh), outputs (Hexahedral_mesh_3, CGAL's LCC), sizes, the report,
+// and bad parameters. The hex meshes are checked from their cells here (counts, orientation of every
+// corner, conformity by quad keys, volume), not from the package's own flags.
+#include <CGAL/hexahedral_remeshing.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace HR = CGAL::Hexahedral_remeshing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef HR::Tetrahedral_mesh_3<> Mesh;
+
+namespace {
+
+const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
+
+Mesh load(const std::string& file, double max_volume)
+{
+  Mesh m;
+  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::split_boundary_chords(true,
+                                           HR::parameters::maximum_tetrahedron_volume(max_volume)));
+  return m;
+}
+
+// Independent checks of a hex mesh: every corner positively oriented (exact), every quad used once
+// (boundary) or twice with opposite orientations (interior), the volume.
+struct Cell_check
+{
+  std::size_t non_positive_corners = 0, boundary_quads = 0, interior_quads = 0, bad_quads = 0;
+  double volume = 0;
+};
+
+Cell_check check_cells(const HR::Hexahedral_mesh_3& h)
+{
+  static const int corner[8][3] = { {1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3} };
+  static const int faces[6][4] = { {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7} };
+  Cell_check c;
+  std::map<std::array<std::uint32_t, 4>, std::vector<std::array<std::uint32_t, 4> > > quads;
+  for(const auto& hex : h.hexahedra) {
+    for(int i = 0; i < 8; ++i)
+      if(CGAL::orientation(h.points[hex[i]], h.points[hex[corner[i][0]]], h.points[hex[corner[i][1]]],
+                           h.points[hex[corner[i][2]]]) != CGAL::POSITIVE)
+        ++c.non_positive_corners;
+    // volume: 5-tet split of the hexahedron
+    static const int tets[5][4] = { {0, 1, 3, 4}, {1, 2, 3, 6}, {1, 4, 5, 6}, {3, 4, 6, 7}, {1, 3, 4, 6} };
+    for(const auto& t : tets)
+      c.volume += CGAL::volume(h.points[hex[t[0]]], h.points[hex[t[1]]], h.points[hex[t[2]]], h.points[hex[t[3]]]);
+    for(const auto& f : faces) {
+      std::array<std::uint32_t, 4> q{ {hex[f[0]], hex[f[1]], hex[f[2]], hex[f[3]]} }, k = q;
+      std::sort(k.begin(), k.end());
+      quads[k].push_back(q);
+    }
+  }
+  for(const auto& kv : quads) {
+    if(kv.second.size() == 1) { ++c.boundary_quads; continue; }
+    if(kv.second.size() != 2) { ++c.bad_quads; continue; }
+    // opposite orientation: the second cycle is the first one reversed (up to rotation)
+    const auto& a = kv.second[0];
+    const auto& b = kv.second[1];
+    bool opposite = false;
+    for(int s = 0; s < 4; ++s) {
+      bool all = true;
+      for(int i = 0; i < 4; ++i) all = all && a[i] == b[(s - i + 8) % 4];
+      opposite = opposite || all;
+    }
+    if(opposite) ++c.interior_quads; else ++c.bad_quads;
+  }
+  return c;
+}
+
+struct Counting_visitor : HR::Hexahedral_remeshing_visitor
+{
+  std::vector<std::string> stages;
+  void start_stage(const std::string& s) { stages.push_back(s); }
+};
+
+} // namespace
+
+TEST(HexahedralRemeshing, CubeFromTetrahedraGivesNCubedHexahedra)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.002);
+  for(int N : {2, 4}) {
+    SCOPED_TRACE(N);
+    HR::Hexahedral_mesh_3 hexes;
+    Counting_visitor visitor;
+    const HR::Hexahedral_remeshing_result r =
+      CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(1.0 / N).visitor(std::ref(visitor)));
+    EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+    ASSERT_EQ(hexes.number_of_hexahedra(), std::size_t(N * N * N));
+    EXPECT_EQ(hexes.number_of_vertices(), std::size_t((N + 1) * (N + 1) * (N + 1)));
+    const Cell_check c = check_cells(hexes);
+    EXPECT_EQ(c.non_positive_corners, 0u);
+    EXPECT_EQ(c.bad_quads, 0u);
+    EXPECT_EQ(c.boundary_quads, std::size_t(6 * N * N));
+    // the frames are the identity only to the smoothing tolerance, and boundary vertices are projected
+    EXPECT_NEAR(c.volume, 1.0, 1e-6);
+    EXPECT_EQ(r.check.hexahedra, std::size_t(N * N * N));
+    EXPECT_GT(r.check.min_scaled_jacobian, 0.999);
+    EXPECT_EQ(r.map.target_edge_length, 1.0 / N);
+    // the 12 edges of the cube: every boundary hex edge on them has 1 hexahedron (prescribed k = 1)
+    EXPECT_EQ(r.hex_feature_edges, std::size_t(12 * N));
+    EXPECT_EQ(r.hex_feature_edges_with_prescribed_valence, r.hex_feature_edges);
+    EXPECT_NEAR(r.feature_coverage, 1.0, 1e-9);
+    EXPECT_TRUE(r.smoothed);
+    EXPECT_GE(r.relative_hausdorff_distance, 0.0);
+    EXPECT_LT(r.relative_hausdorff_distance, 1e-6);
+    for(const char* stage : {"valences", "constraints", "rounding", "cells", "hex smoothing", "check"})
+      EXPECT_NE(std::find(visitor.stages.begin(), visitor.stages.end(), stage), visitor.stages.end()) << stage;
+  }
+}
+
+TEST(HexahedralRemeshing, SurfaceMeshInLinearCellComplexOut)
+{
+  CGAL::Surface_mesh<K::Point_3> surface;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(example_data + "/cube.off", surface));
+  CGAL::Linear_cell_complex_for_combinatorial_map<3> lcc;
+  const HR::Hexahedral_remeshing_result r = CGAL::hexahedral_remeshing(
+    surface, lcc, HR::parameters::number_of_hexahedra(std::size_t(27), HR::parameters::maximum_tetrahedron_volume(0.002)));
+  EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  EXPECT_NEAR(r.map.target_edge_length, 1.0 / 3.0, 1e-9);
+  EXPECT_EQ(lcc.one_dart_per_cell<3>().size(), 27u);
+  EXPECT_EQ(lcc.one_dart_per_cell<0>().size(), 64u);
+  EXPECT_TRUE(lcc.is_valid());
+}
+
+TEST(HexahedralRemeshing, WithoutSmoothingTheHexahedraAreTheIntegerCells)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.002);
+  HR::Hexahedral_mesh_3 hexes;
+  const HR::Hexahedral_remeshing_result r = CGAL::hexahedral_remeshing(
+    m, hexes, HR::parameters::target_edge_length(0.5, HR::parameters::hexahedral_smoothing(false)));
+  EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  EXPECT_FALSE(r.smoothed);
+  EXPECT_EQ(r.relative_hausdorff_distance, -1.0);
+  ASSERT_EQ(hexes.number_of_hexahedra(), 8u);
+  // the vertices of the extracted cube grid are the multiples of 1/2 (up to the accuracy of the frames)
+  for(const auto& p : hexes.points)
+    for(int i = 0; i < 3; ++i) EXPECT_NEAR(2 * p[i], std::round(2 * p[i]), 1e-6);
+}
+
+TEST(HexahedralRemeshing, BadParameters)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.01);
+  HR::Hexahedral_mesh_3 hexes;
+  EXPECT_THROW(CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(-1.0)), HR::Input_error);
+  EXPECT_THROW(CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(std::numeric_limits<double>::quiet_NaN())),
+               HR::Input_error);
+}
