@@ -398,7 +398,10 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
 
   if(report.before.non_positive > 0) {
     report.untangling_run = true;
-    minimize(true, internal::Foldover_free_options());
+    // the quality rounds optimize further with the barrier: stop as soon as nothing is inverted
+    internal::Foldover_free_options untangling;
+    untangling.stop_when_untangled = true;
+    minimize(true, untangling);
     const Hexahedral_mesh_quality q = internal::hex_mesh_quality(work, constraints, projector);
     offer(q, 0);
     visitor.after_untangling(q);

@@ -128,7 +128,13 @@ public:
     return D * m_p.M[e];
   }
 
-  void corners(const Eigen::VectorXd& y, Eigen::VectorXd& x) const { x = m_p.P * y + m_p.x0; }
+  // x = P y + x0, into x's storage (large meshes: a fresh vector per evaluation costs page faults)
+  void corners(const Eigen::VectorXd& y, Eigen::VectorXd& x) const
+  {
+    x.resize(m_p.x0.size());
+    x.noalias() = m_p.P * y;
+    x += m_p.x0;
+  }
 
   // min det K_e and the number of det K_e <= 0 (floating point), on corner values x
   std::pair<double, std::size_t> determinants(const Eigen::VectorXd& x)
@@ -167,7 +173,8 @@ public:
     // fixed-order reductions: the result does not depend on the number of threads
     double F = 0;
     for(double f : m_energy) F += f;
-    grad = m_Pt * m_gx;
+    grad.resize(y.size());
+    grad.noalias() = m_Pt * m_gx;
     if(m_p.anchor_weight.size() == y.size() && m_p.anchor.size() == y.size()) {
       const Eigen::VectorXd d = y - m_p.anchor;
       F += m_scale * d.dot(m_p.anchor_weight.cwiseProduct(d));
