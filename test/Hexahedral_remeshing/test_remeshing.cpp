@@ -114,6 +114,7 @@ TEST(HexahedralRemeshing, CubeFromTetrahedraGivesNCubedHexahedra)
     EXPECT_EQ(r.hex_feature_edges, std::size_t(12 * N));
     EXPECT_EQ(r.hex_feature_edges_with_prescribed_valence, r.hex_feature_edges);
     EXPECT_NEAR(r.feature_coverage, 1.0, 1e-9);
+    EXPECT_NEAR(r.volume_ratio, 1.0, 1e-6);
     EXPECT_TRUE(r.smoothed);
     EXPECT_GE(r.relative_hausdorff_distance, 0.0);
     EXPECT_LT(r.relative_hausdorff_distance, 1e-6);

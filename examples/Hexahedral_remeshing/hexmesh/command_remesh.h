@@ -126,6 +126,7 @@ inline int command_remesh(const Arguments& args)
         .value("hex_feature_edges", r.hex_feature_edges)
         .value("hex_feature_edges_with_prescribed_valence", r.hex_feature_edges_with_prescribed_valence)
         .value("relative_hausdorff_distance", r.relative_hausdorff_distance)
+        .value("volume_ratio", r.volume_ratio)
         .end();
     json.begin("seconds")
         .value("read", read_seconds)
@@ -155,8 +156,9 @@ inline int command_remesh(const Arguments& args)
       print_hexahedral_mesh_check(std::cout, r.check);
       std::cout << "  features            " << r.hex_feature_edges_with_prescribed_valence << "/" << r.hex_feature_edges
                 << " hex edges on sharp edges with the prescribed valence; " << std::fixed << std::setprecision(1)
-                << 100 * r.feature_coverage << "% of the sharp-edge length on hex edges; Hausdorff distance "
-                << std::scientific << std::setprecision(2) << r.relative_hausdorff_distance << " of the diagonal\n"
+                << 100 * r.feature_coverage << "% of the sharp-edge length on hex edges; hex volume "
+                << std::setprecision(3) << r.volume_ratio << " of the solid's; Hausdorff distance " << std::scientific
+                << std::setprecision(2) << r.relative_hausdorff_distance << " of the diagonal\n"
                 << std::defaultfloat;
       if(r.smoothed)
         std::cout << std::fixed << std::setprecision(3) << "  smoothing           min scaled Jacobian "

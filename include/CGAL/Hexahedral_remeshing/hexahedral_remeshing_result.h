@@ -36,10 +36,12 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(hexahedral_smoothing)
 /// \ingroup PkgHexahedralRemeshingRef
 /// Overall outcome of `CGAL::hexahedral_remeshing()`.
 enum class Hexahedral_remeshing_status {
-  /// A valid hex mesh: conforming, closed 2-manifold boundary, no duplicates, every scaled Jacobian > 0.
+  /// A valid hex mesh of the whole solid: conforming, closed 2-manifold boundary, no duplicates, every
+  /// scaled Jacobian > 0, and no cell left out by the extraction.
   OK,
-  /// A hex mesh was produced but it is not valid (inverted hexahedra, or cells missing where the map is
-  /// broken): see `Hexahedral_remeshing_result::check` and the stage reports.
+  /// A hex mesh was produced but it is not valid (inverted hexahedra), or cells are missing where the map
+  /// is broken (the mesh does not fill the solid): see `Hexahedral_remeshing_result::check`,
+  /// `Hexahedral_remeshing_result::volume_ratio` and the stage reports.
   INVALID_HEX_MESH,
   /// The integer-grid map has no complete integer cell: no hexahedron (the map status says why).
   NO_HEXAHEDRA
@@ -105,6 +107,9 @@ struct Hexahedral_remeshing_result
   Hexahedral_smoothing_report smoothing;
   /// Check of the final hex mesh (conformity, manifoldness, scaled Jacobian, irregular edges).
   Hexahedral_mesh_check check;
+  /// Volume of the hex mesh over the volume of the tetrahedral mesh (1 when the hexahedra fill the solid
+  /// exactly; curved boundaries make it differ by O(edge length / size)).
+  double volume_ratio = 0;
   /// Length of the sharp edges of the input (feature curves and edges of prescribed valence other than 2).
   double feature_length = 0;
   /// Share (0..1) of `feature_length` covered by boundary hex edges lying along the sharp edges.

@@ -99,17 +99,21 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
   r.hex_feature_edges_with_prescribed_valence = f.valence_matched;
   if(r.smoothed && r.smoothing.after.hausdorff_distance >= 0 && diagonal > 0)
     r.relative_hausdorff_distance = r.smoothing.after.hausdorff_distance / diagonal;
+  const double volume = tetrahedral_mesh_volume(mesh);
+  r.volume_ratio = volume > 0 ? r.check.total_volume / volume : 0.;
   r.check_seconds = seconds_since(t);
   visitor.end_stage("check", r.check_seconds);
 
-  if(r.check.valid) {
+  const std::size_t missing = r.extraction.incomplete_cells + r.extraction.untraced_corners;
+  if(r.check.valid && missing == 0) {
     r.status = Hexahedral_remeshing_status::OK;
   } else {
     r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
     r.message = std::to_string(r.check.inverted_hexahedra) + " inverted hexahedra (min scaled Jacobian " +
                 std::to_string(r.check.min_scaled_jacobian) + "), " + std::to_string(r.check.non_conforming_quads) +
                 " non-conforming quads, " + std::to_string(r.extraction.incomplete_cells) +
-                " incomplete cells left out; integer-grid map status " + status_name(r.map.status);
+                " cells left out by the extraction (hex volume " + std::to_string(r.volume_ratio) +
+                " of the solid's); integer-grid map status " + status_name(r.map.status);
   }
   r.seconds = seconds_since(start);
   return r;

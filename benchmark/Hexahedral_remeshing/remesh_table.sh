@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# One row per model: hexmesh remesh (prescribed valences, and --baseline) on every model of ../shared/data
+# (or the files given), with the outcome, hex count, scaled Jacobian, Hausdorff distance, feature coverage,
+# hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory (GNU time).
+#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--timeout S] [FILE...]
+# Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build="${BUILD_DIR:-$root/build}"
+hexmesh="$build/examples/Hexahedral_remeshing/hexmesh"
+out="$build/remesh_table"
+baseline=0; limit=600; files=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --baseline-too) baseline=1 ;;
+    --timeout) limit="$2"; shift ;;
+    *) files+=("$1") ;;
+  esac
+  shift
+done
+if [ ${#files[@]} -eq 0 ]; then
+  for f in "$root"/../shared/data/hexme/*.vtk "$root"/../shared/data/mambo/*.vtk; do [ -e "$f" ] && files+=("$f"); done
+fi
+mkdir -p "$out"
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
+modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline)
+printf '%-28s %-10s %8s %7s %-17s %6s %6s %9s %6s %9s %8s %8s %8s %8s %7s\n' model mode tets hexes status minSJ meanSJ \
+  hausdorff cover valences field_s map_s extr_s smooth_s peakMB
+for f in "${files[@]}"; do
+  name=$(basename "$f" .vtk)
+  for mode in "${modes[@]}"; do
+    flag=(); [ "$mode" = baseline ] && flag=(--baseline)
+    json="$out/$name.$mode.json"; rm -f "$json"
+    /usr/bin/time -f '%M' -o "$out/$name.$mode.mem" timeout "$limit" "$hexmesh" remesh "$f" "${flag[@]}" --quiet \
+      --keep-partial --out "$out/$name.$mode.mesh" --json "$json" > /dev/null 2> "$out/$name.$mode.err"
+    rc=$?
+    python3 - "$json" "$out/$name.$mode.mem" "$name" "$mode" "$rc" "$out/$name.$mode.err" <<'PY'
+import json, os, sys
+path, mem, name, mode, rc, err = sys.argv[1:]
+try: peak = int(open(mem).read().split()[-1]) / 1024
+except Exception: peak = float('nan')
+if not os.path.exists(path):
+    msg = open(err).read().strip().splitlines()
+    print('%-28s %-10s %s' % (name, mode, 'exit %s: %s' % (rc, msg[-1][:110] if msg else 'timeout')))
+    sys.exit(0)
+r = json.load(open(path))
+h, f, s = r['hex_mesh'], r['features'], r['seconds']
+print('%-28s %-10s %8d %7d %-17s %6.3f %6.3f %9.2e %6.3f %9s %8.2f %8.2f %8.2f %8.2f %7.0f' % (
+    name, mode, r['tetrahedra'], h['hexahedra'], r['status'], h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
+    f['relative_hausdorff_distance'], f['coverage'],
+    '%d/%d' % (f['hex_feature_edges_with_prescribed_valence'], f['hex_feature_edges']),
+    s['frame_field'], s['map'], s['extraction'], s['smoothing'], peak))
+PY
+  done
+done
