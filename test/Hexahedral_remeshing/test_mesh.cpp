@@ -279,7 +279,8 @@ TEST(Validation, BrokenFilesGiveClearErrors)
     {"nonmanifold_edge.vtk", "non-manifold boundary", 0, false},
     {"nonmanifold_vertex.vtk", "vertex 0: non-manifold boundary", 0, false},
     {"duplicate_tetrahedron.vtk", "duplicate of tetrahedron", 0, false},
-    {"binary.vtk", "binary VTK files are not supported", 3, true},
+    // binary VTK is read since issue 13: this one says BINARY but holds text, too short for the data
+    {"binary.vtk", "POINTS: the binary block of 15 values of type double is truncated", 5, false},
     {"not_vtk.vtk", "not a VTK legacy file", 1, false},
     {"wrong_cell_size.vtk", "has 4 vertices instead of 3", 0, false},
     {"empty.vtk", "unexpected end of file", 0, false},

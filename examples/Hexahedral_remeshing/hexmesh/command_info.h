@@ -55,16 +55,24 @@ inline void print_statistics(std::ostream& out, const std::string& file, const C
 }
 
 // Options every command reading a mesh accepts.
-inline std::vector<std::string> input_options() { return {"max-volume", "radius-edge"}; }
+inline std::vector<std::string> input_options() { return {"max-volume", "radius-edge", "mesh-size", "coincident-vertices"}; }
 
 // Reads the input; `split_chords` also splits the interior edges joining two boundary vertices
 // (what the frame-field pipeline needs at acute features).
 inline void read_input_mesh(const Arguments& args, const std::string& in, Mesh& mesh, bool split_chords = false)
 {
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  typedef CGAL::Hexahedral_remeshing::Coincident_vertices Coincident;
+  const double mesh_size = args.number("mesh-size", 0.);
+  if(args.has("mesh-size") && !(mesh_size > 0)) throw Usage_error("option --mesh-size expects a positive length");
+  const std::string coincident = args.value("coincident-vertices", "refuse");
+  if(coincident != "refuse" && coincident != "merge" && coincident != "keep")
+    throw Usage_error("option --coincident-vertices expects refuse, merge or keep, got '" + coincident + "'");
+  const Coincident policy = coincident == "merge" ? Coincident::MERGE : coincident == "keep" ? Coincident::KEEP
+                                                                                              : Coincident::REFUSE;
   CGAL::Hexahedral_remeshing::IO::read_tetrahedral_mesh(
     in, mesh, HP::maximum_tetrahedron_volume(args.number("max-volume", 0.), HP::radius_edge_ratio(args.number("radius-edge", 2.),
-              HP::split_boundary_chords(split_chords))));
+              HP::split_boundary_chords(split_chords, HP::mesh_size(mesh_size, HP::coincident_vertices(policy))))));
 }
 
 inline int command_info(const Arguments& args)

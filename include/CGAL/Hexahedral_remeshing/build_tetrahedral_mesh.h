@@ -13,6 +13,30 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 
 /// \ingroup PkgHexahedralRemeshingRef
+/// What `build_tetrahedral_mesh()` does with distinct vertices of the tetrahedra that have exactly
+/// the same coordinates (a mesh cracked along an interface: its two sides meshed with separate,
+/// duplicated nodes, as multi-threaded gmsh sometimes writes).
+enum class Coincident_vertices
+{
+  REFUSE, ///< throw an `Input_error` with their count and the first pair (default)
+  MERGE,  ///< merge each group into the vertex of smallest index (the crack is closed)
+  KEEP    ///< keep them: separate bodies that touch
+};
+
+namespace internal_np {
+enum coincident_vertices_t { coincident_vertices };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// Policy for coincident vertices of a tetrahedral mesh (`Coincident_vertices`, default `REFUSE`).
+template <class T> unspecified_type coincident_vertices(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(coincident_vertices)
+#endif
+} // namespace parameters
+
+/// \ingroup PkgHexahedralRemeshingRef
 /// Builds `mesh` from a soup of tetrahedra: checks the input, re-orients inverted tetrahedra,
 /// builds faces, boundary triangles, edges and their rings, components, and transfers the feature
 /// hints of the soup (patches, curves, corners). Runs in O(n log n).
@@ -26,7 +50,8 @@ namespace Hexahedral_remeshing {
 /// \throws Input_error naming the source, the element and the problem for: no tetrahedra, a
 /// non-finite coordinate, an out-of-range index, a degenerate tetrahedron (exact test), a duplicated
 /// tetrahedron, a face shared by more than two tetrahedra, overlapping tetrahedra, a non-manifold
-/// boundary edge or vertex (a "bow-tie"), and, with `split_multi_boundary_tetrahedra`, a tetrahedron
+/// boundary edge or vertex (a "bow-tie"), distinct vertices at the same position (unless
+/// `coincident_vertices` says to merge or keep them), and, with `split_multi_boundary_tetrahedra`, a tetrahedron
 /// so flat that a child of its split at the rounded barycentre would be degenerate.
 ///
 /// \param soup the input
@@ -47,6 +72,12 @@ namespace Hexahedral_remeshing {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{coincident_vertices}
+///     \cgalParamDescription{what to do with distinct vertices of the tetrahedra at exactly the same
+///       position (compared exactly): refuse, merge, or keep as touching bodies}
+///     \cgalParamType{`Coincident_vertices`}
+///     \cgalParamDefault{`Coincident_vertices::REFUSE`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{an instance of the traits}
 ///     \cgalParamType{a model of `HexahedralRemeshingTraits_3`}
@@ -63,7 +94,9 @@ void build_tetrahedral_mesh(const Tetrahedral_soup_3<typename Traits::Point_3>& 
   const bool split = choose_parameter(get_parameter(np, internal_np::split_multi_boundary_tetrahedra), true);
   const bool chords = choose_parameter(get_parameter(np, internal_np::split_boundary_chords), false);
   const Traits traits = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Traits());
-  internal::Tetrahedral_mesh_builder<Traits>(traits).build(soup, mesh, split, chords);
+  const Coincident_vertices coincident =
+    choose_parameter(get_parameter(np, internal_np::coincident_vertices), Coincident_vertices::REFUSE);
+  internal::Tetrahedral_mesh_builder<Traits>(traits).build(soup, mesh, split, chords, int(coincident));
 }
 
 } // namespace Hexahedral_remeshing

@@ -14,11 +14,34 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace IO {
 
+namespace internal_medit {
+
+// Tokens per item of the blocks that are skipped (0: not a skipped block).
+inline std::size_t tokens_per_item(const std::string& key)
+{
+  static const char* const names[] = {
+    "Quadrilaterals", "Ridges", "RequiredVertices", "RequiredEdges", "RequiredTriangles",
+    "RequiredQuadrilaterals", "RequiredTetrahedra", "Normals", "NormalAtVertices",
+    "NormalAtTriangleVertices", "NormalAtQuadrilateralVertices", "Tangents", "TangentAtVertices",
+    "TangentAtEdges", "VertexOnGeometricVertex", "VertexOnGeometricEdge", "VertexOnGeometricTriangle",
+    "EdgeOnGeometricEdge", "TriangleOnGeometricTriangle", "TrianglesP2", "EdgesP2", "QuadrilateralsQ2",
+    "SubDomainFromMesh", "SubDomainFromGeom", "Crack"};
+  static const std::size_t per[] = {5, 1, 1, 1, 1, 1, 1, 3, 2, 3, 3, 3, 2, 2, 2, 3, 4, 2, 2, 7, 4, 10, 4, 4, 2};
+  for(std::size_t i = 0; i < sizeof(per) / sizeof(per[0]); ++i)
+    if(key == names[i]) return per[i];
+  return 0;
+}
+
+} // namespace internal_medit
+
 /// \ingroup PkgHexahedralRemeshingRef
 /// Reads a MEDIT ASCII `.mesh` file into `soup`: `Vertices` (x y z ref), `Tetrahedra` (4 indices,
-/// 1-based, ref), and the hints `Triangles` (ref = surface patch), `Edges` (ref = feature curve),
-/// `Corners`. The blocks `Quadrilaterals`, `Hexahedra`, `Ridges`, `RequiredVertices`,
-/// `RequiredEdges`, `Prisms` and `Pyramids` are skipped, as are `#` comments.
+/// 1-based, ref) and `TetrahedraP2` (their 4 corner nodes), and the hints `Triangles` (ref =
+/// surface patch), `Edges` (ref = feature curve), `Corners`. The blocks that carry nothing for a
+/// tetrahedral mesh are skipped, as the MEDIT manual prescribes: `Quadrilaterals`, `Ridges`,
+/// `Required*`, `Normals`, `NormalAt*`, `Tangents`, `TangentAt*`, `Identifier`, `Geometry`,
+/// `*OnGeometric*`, `TrianglesP2`, `EdgesP2`, and `#` comments. Non-empty `Hexahedra`, `Prisms`
+/// or `Pyramids` blocks are refused with their counts (dropping them would shrink the domain).
 ///
 /// Windows line ends are accepted. A count larger than what the rest of the file can hold is
 /// rejected before anything is allocated.
@@ -27,7 +50,7 @@ namespace IO {
 /// \param source the name of the file, used in error messages
 /// \param soup the output (overwritten)
 /// \throws Input_error (file, line, problem) for an unreadable, truncated or malformed file, a count
-///         larger than the file, an index below 1;
+///         larger than the file, an index below 1, volume cells other than tetrahedra;
 ///         Unsupported_input for an unknown keyword (binary `.meshb` content) or a 2D mesh.
 template <class Point>
 void read_MEDIT(const std::string& text, const std::string& source, Tetrahedral_soup_3<Point>& soup)
@@ -37,6 +60,8 @@ void read_MEDIT(const std::string& text, const std::string& source, Tetrahedral_
   soup = Tetrahedral_soup_3<Point>();
   soup.source = source;
   bool have_vertices = false, ended = false;
+  std::string other_volume_cells;
+  std::size_t first_other_line = 0;
 
   auto index = [&](const char* what) -> std::size_t {
     const long long v = tk.next_integer(what);
@@ -89,12 +114,35 @@ void read_MEDIT(const std::string& text, const std::string& source, Tetrahedral_
     } else if(key == "Corners") {
       const std::size_t n = tk.next_count("Corners", 1);
       for(std::size_t i = 0; i < n; ++i) soup.corners.push_back(index("Corners"));
-    } else if(key == "Quadrilaterals" || key == "Hexahedra" || key == "Ridges" || key == "RequiredVertices" ||
-              key == "RequiredEdges" || key == "Prisms" || key == "Pyramids") {
-      const std::size_t per = key == "Quadrilaterals" ? 5 : key == "Hexahedra" ? 9 : key == "Prisms" ? 7
-                            : key == "Pyramids" ? 6 : 1;
+    } else if(key == "TetrahedraP2") {
+      // second-order tetrahedra: the four corner nodes come first
+      const std::size_t n = tk.next_count("TetrahedraP2", 11);
+      for(std::size_t i = 0; i < n; ++i) {
+        std::array<std::size_t, 4> t;
+        for(int k = 0; k < 4; ++k) t[k] = index("TetrahedraP2");
+        soup.tetrahedron_lines.push_back(tk.line());
+        for(int k = 4; k < 10; ++k) index("TetrahedraP2");
+        tk.next_integer("TetrahedraP2 reference");
+        soup.tetrahedra.push_back(t);
+      }
+    } else if(key == "Hexahedra" || key == "Prisms" || key == "Pyramids" || key == "HexahedraQ2") {
+      const std::size_t per = key == "Hexahedra" ? 9 : key == "Prisms" ? 7 : key == "Pyramids" ? 6 : 28;
       const std::size_t n = tk.next_count(key.c_str(), per);
+      if(n > 0) {
+        other_volume_cells += (other_volume_cells.empty() ? "" : ", ") + std::to_string(n) + " " + key;
+        if(first_other_line == 0) first_other_line = tk.line();
+      }
       for(std::size_t i = 0; i < n * per; ++i) tk.next_integer(key.c_str());
+    } else if(key == "Identifier" || key == "Geometry") {
+      // a string (possibly quoted, with spaces)
+      std::string w = tk.next(key.c_str());
+      if(w[0] == '"')
+        while(w.size() < 2 || w.back() != '"') w = tk.next(key.c_str());
+    } else if(const std::size_t per = internal_medit::tokens_per_item(key)) {
+      // blocks that carry nothing for a tetrahedral mesh (normals, tangents, required entities,
+      // quadrilaterals, ridges, links to a geometry): skipped, as the MEDIT manual prescribes
+      const std::size_t n = tk.next_count(key.c_str(), per);
+      for(std::size_t i = 0; i < n * per; ++i) tk.next(key.c_str());
     } else if(key == "End") {
       ended = true;
     } else {
@@ -102,6 +150,10 @@ void read_MEDIT(const std::string& text, const std::string& source, Tetrahedral_
     }
   }
   if(!have_vertices) tk.fail("no Vertices block");
+  if(!other_volume_cells.empty())
+    throw Input_error(source, first_other_line, "the mesh has volume cells other than tetrahedra (" + other_volume_cells +
+                      ", with " + std::to_string(soup.tetrahedra.size()) + " Tetrahedra); they would be lost and the "
+                      "domain would shrink: split them into tetrahedra and retry");
 }
 
 } // namespace IO

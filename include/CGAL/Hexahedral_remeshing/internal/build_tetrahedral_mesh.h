@@ -43,9 +43,15 @@ public:
 
   Tetrahedral_mesh_builder(const Traits& traits) : m_traits(traits) {}
 
+  // What to do with distinct vertices at the same position, both used by tetrahedra.
+  enum Coincident_policy { REFUSE_COINCIDENT = 0, MERGE_COINCIDENT = 1, KEEP_COINCIDENT = 2 };
+
   void build(const Tetrahedral_soup_3<Point_3>& soup, Mesh& mesh, bool split_multi_boundary_tetrahedra,
-             bool split_boundary_chords = false)
+             bool split_boundary_chords = false, int coincident_policy = REFUSE_COINCIDENT)
   {
+    m_coincident_policy = coincident_policy;
+    m_remap.clear();
+    m_merged_vertices = 0;
     m_source = soup.source.empty() ? std::string("<memory>") : soup.source;
     mesh = Mesh();
     mesh.m_source = m_source;
@@ -67,7 +73,60 @@ public:
     apply_hints(soup, mesh);
   }
 
+  // Number of vertices merged into another one (MERGE_COINCIDENT).
+  std::size_t merged_vertices() const { return m_merged_vertices; }
+
 private:
+  // Vertices used by tetrahedra at exactly the same position as another used vertex: the mesh is
+  // cracked there (two sides of an interface meshed with separate nodes, as multi-threaded gmsh
+  // sometimes writes), which the builder would take for two bodies touching, with spurious
+  // boundary and feature edges along the crack.
+  void find_coincident_vertices(const Tetrahedral_soup_3<Point_3>& soup)
+  {
+    if(m_coincident_policy == KEEP_COINCIDENT) return;
+    const std::size_t nv = soup.points.size();
+    std::vector<char> used(nv, 0);
+    for(const auto& t : soup.tetrahedra)
+      for(std::size_t v : t) if(v < nv) used[v] = 1;
+    std::vector<Index> order;
+    for(std::size_t v = 0; v < nv; ++v) if(used[v]) order.push_back(Index(v));
+    auto key = [&](Index v) {
+      const Point_3& p = soup.points[v];
+      return std::array<double, 3>{CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])};
+    };
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+      const auto ka = key(a), kb = key(b);
+      return ka < kb || (ka == kb && a < b);
+    });
+    std::size_t count = 0;
+    Index first_a = 0, first_b = 0;
+    std::vector<Index> remap;
+    for(std::size_t i = 1; i < order.size(); ++i) {
+      if(key(order[i]) != key(order[i - 1])) continue;
+      if(count++ == 0) { first_a = order[i - 1]; first_b = order[i]; }
+      if(m_coincident_policy == MERGE_COINCIDENT) {
+        if(remap.empty()) {
+          remap.resize(nv);
+          for(std::size_t v = 0; v < nv; ++v) remap[v] = Index(v);
+        }
+        remap[order[i]] = remap[order[i - 1]]; // the smallest index of the group
+      }
+    }
+    if(count == 0) return;
+    if(m_coincident_policy == MERGE_COINCIDENT) {
+      m_remap.swap(remap);
+      m_merged_vertices = count;
+      return;
+    }
+    const Point_3& p = soup.points[first_a];
+    fail(0, std::to_string(count) + " vertices of the tetrahedra coincide with other vertices (first: vertices " +
+         std::to_string(first_a) + " and " + std::to_string(first_b) + " at (" + std::to_string(CGAL::to_double(p[0])) +
+         ", " + std::to_string(CGAL::to_double(p[1])) + ", " + std::to_string(CGAL::to_double(p[2])) +
+         ")): the mesh is cracked along an interface (duplicated nodes). Merge them (hexmesh option "
+         "--coincident-vertices merge, named parameter coincident_vertices(Coincident_vertices::MERGE)), or keep "
+         "separate bodies that touch (--coincident-vertices keep)");
+  }
+
   [[noreturn]] void fail(std::size_t line, const std::string& problem) const
   {
     throw Input_error(m_source, line, problem);
@@ -91,6 +150,7 @@ private:
     }
     mesh.m_points = soup.points;
     mesh.m_number_of_input_vertices = soup.points.size();
+    find_coincident_vertices(soup);
 
     typename Traits::Orientation_3 orientation = m_traits.orientation_3_object();
     const std::size_t nv = soup.points.size();
@@ -103,7 +163,7 @@ private:
         if(in[i] >= nv)
           fail(line_of(t, soup.tetrahedron_lines), describe_tet(t) + ": vertex index " + std::to_string(in[i]) +
                " out of range (the mesh has " + std::to_string(nv) + " vertices)");
-        tv[i] = Index(in[i]);
+        tv[i] = m_remap.empty() ? Index(in[i]) : m_remap[in[i]];
       }
       const CGAL::Orientation o = orientation(mesh.m_points[tv[0]], mesh.m_points[tv[1]],
                                               mesh.m_points[tv[2]], mesh.m_points[tv[3]]);
@@ -546,10 +606,11 @@ private:
     auto check_index = [&](std::size_t v, const char* what, std::size_t i) {
       if(v >= nv) fail(0, std::string(what) + " " + std::to_string(i) + ": vertex index " + std::to_string(v) + " out of range");
     };
+    auto map = [&](std::size_t v) { return m_remap.empty() ? Index(v) : m_remap[v]; };
     std::set<int> patches, curves;
     for(std::size_t i = 0; i < soup.triangles.size(); ++i) {
       std::array<Index, 3> key;
-      for(int k = 0; k < 3; ++k) { check_index(soup.triangles[i][k], "triangle", i); key[k] = Index(soup.triangles[i][k]); }
+      for(int k = 0; k < 3; ++k) { check_index(soup.triangles[i][k], "triangle", i); key[k] = map(soup.triangles[i][k]); }
       std::sort(key.begin(), key.end());
       auto it = std::lower_bound(m_face_keys.begin(), m_face_keys.end(), key);
       if(it == m_face_keys.end() || *it != key) continue; // not a face of the mesh: only a hint
@@ -562,7 +623,7 @@ private:
     for(std::size_t i = 0; i < soup.feature_edges.size(); ++i) {
       check_index(soup.feature_edges[i][0], "feature edge", i);
       check_index(soup.feature_edges[i][1], "feature edge", i);
-      const Index e = find_edge(mesh, Index(soup.feature_edges[i][0]), Index(soup.feature_edges[i][1]));
+      const Index e = find_edge(mesh, map(soup.feature_edges[i][0]), map(soup.feature_edges[i][1]));
       if(e == null_index) continue;
       const int curve = i < soup.feature_edge_curves.size() ? soup.feature_edge_curves[i] : 0;
       if(mesh.m_edge_curve[e] < 0) ++mesh.m_number_of_feature_edges;
@@ -572,7 +633,7 @@ private:
     std::set<Index> corners;
     for(std::size_t i = 0; i < soup.corners.size(); ++i) {
       check_index(soup.corners[i], "corner", i);
-      corners.insert(Index(soup.corners[i]));
+      corners.insert(map(soup.corners[i]));
     }
     mesh.m_corners.assign(corners.begin(), corners.end());
     mesh.m_number_of_patches = patches.size();
@@ -581,6 +642,9 @@ private:
 
   const Traits& m_traits;
   std::string m_source;
+  int m_coincident_policy = REFUSE_COINCIDENT;
+  std::vector<Index> m_remap;   // vertex -> representative of its position (empty: identity)
+  std::size_t m_merged_vertices = 0;
   std::vector<std::array<Index, 3> > m_face_keys; // sorted: face f has key m_face_keys[f]
   std::vector<Index> m_original_tet;              // input tetrahedron of each tetrahedron after a split
 };

@@ -1,0 +1,333 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_IO_READ_GMSH_H
+#define CGAL_HEXAHEDRAL_REMESHING_IO_READ_GMSH_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/internal/isolated_call.h>
+#include <CGAL/Hexahedral_remeshing/tetrahedralize_surface.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+namespace internal_np {
+enum mesh_size_t { mesh_size };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// CAD input: target edge length of gmsh's tetrahedra, in the units of the part (`double`,
+/// default: the diagonal of the part's bounding box divided by 20).
+template <class T> unspecified_type mesh_size(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(mesh_size)
+#endif
+} // namespace parameters
+
+namespace IO {
+namespace internal_gmsh {
+
+// gmsh is a process-wide singleton that prints on the terminal: it only ever runs in the child
+// process of internal::run_isolated(), initialized there and silenced, so that every call starts
+// from a clean state, any number of calls (and calls from a process that uses gmsh itself) are
+// safe, and nothing is printed.
+inline void start()
+{
+  gmsh::initialize(0, nullptr, false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.Verbosity", 1);
+  gmsh::option::setNumber("General.NumThreads", 1);
+  gmsh::logger::start();
+}
+
+// The last error gmsh logged, or `fallback`.
+inline std::string last_error(const std::string& fallback)
+{
+  std::vector<std::string> log;
+  try { gmsh::logger::get(log); } catch(...) {}
+  for(auto it = log.rbegin(); it != log.rend(); ++it)
+    if(it->compare(0, 6, "Error:") == 0) {
+      std::string s = it->substr(6);
+      while(!s.empty() && s.front() == ' ') s.erase(s.begin());
+      return s;
+    }
+  return fallback;
+}
+
+// Runs a gmsh call; a failure becomes an Input_error with gmsh's own message.
+template <class F>
+void call(const std::string& source, const std::string& doing, const F& f)
+{
+  try {
+    f();
+  } catch(const Input_error&) {
+    throw;
+  } catch(...) {
+    throw Input_error(source, 0, "gmsh could not " + doing + ": " + last_error("unknown error"));
+  }
+}
+
+inline void check_readable(const std::string& filename)
+{
+  std::ifstream probe(filename, std::ios::binary);
+  if(!probe) throw Input_error(filename, 0, "cannot open file for reading");
+}
+
+// Corners among the candidate vertices: where the number of feature curves met is not 2, or where
+// two curves meet at an angle (not a smooth continuation: the end of a circle split into arcs, the
+// end of a seam-free closed curve).
+template <class Point>
+std::vector<std::size_t> select_corners(const Tetrahedral_soup_3<Point>& soup, const std::set<std::size_t>& candidates)
+{
+  std::map<std::size_t, std::vector<std::pair<int, std::size_t> > > ends; // vertex -> (curve, other end)
+  for(std::size_t i = 0; i < soup.feature_edges.size(); ++i) {
+    const auto& e = soup.feature_edges[i];
+    if(candidates.count(e[0])) ends[e[0]].push_back({soup.feature_edge_curves[i], e[1]});
+    if(candidates.count(e[1])) ends[e[1]].push_back({soup.feature_edge_curves[i], e[0]});
+  }
+  std::vector<std::size_t> corners;
+  for(std::size_t v : candidates) {
+    const auto it = ends.find(v);
+    if(it == ends.end()) continue; // a point of a seam or of no feature curve
+    const auto& list = it->second;
+    bool corner = list.size() != 2;
+    if(!corner) {
+      const Point& p = soup.points[v];
+      const Point& a = soup.points[list[0].second];
+      const Point& b = soup.points[list[1].second];
+      double u[3], w[3], nu = 0, nw = 0, dot = 0;
+      for(int i = 0; i < 3; ++i) {
+        u[i] = CGAL::to_double(a[i]) - CGAL::to_double(p[i]);
+        w[i] = CGAL::to_double(b[i]) - CGAL::to_double(p[i]);
+        nu += u[i] * u[i]; nw += w[i] * w[i]; dot += u[i] * w[i];
+      }
+      // straight continuation: the two segments point in opposite directions (angle > 150 degrees)
+      corner = !(nu > 0 && nw > 0 && dot / std::sqrt(nu * nw) < -0.866);
+    }
+    if(corner) corners.push_back(v);
+  }
+  return corners;
+}
+
+// Copies the mesh of the current gmsh model into `soup`: tetrahedra (corner nodes of any order),
+// triangles tagged by their surface entity, line segments tagged by their curve entity (but seam
+// curves, which bound one surface only), and corners. Volume elements other than tetrahedra are
+// refused with their counts.
+template <class Point>
+void extract(const std::string& source, Tetrahedral_soup_3<Point>& soup)
+{
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::size_t> index;
+  index.reserve(node_tags.size());
+  for(std::size_t i = 0; i < node_tags.size(); ++i) {
+    if(!index.emplace(node_tags[i], soup.points.size()).second) continue;
+    soup.points.push_back(Point(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]));
+  }
+  auto node = [&](std::size_t tag) {
+    const auto it = index.find(tag);
+    if(it == index.end()) throw Input_error(source, 0, "an element refers to node " + std::to_string(tag) + ", which does not exist");
+    return it->second;
+  };
+
+  std::map<std::string, std::size_t> other_volume_cells;
+  std::set<std::size_t> corner_candidates;
+  for(int dim = 3; dim >= 0; --dim) {
+    std::vector<std::pair<int, int> > entities;
+    gmsh::model::getEntities(entities, dim);
+    for(const auto& dt : entities) {
+      bool seam = false;
+      if(dim == 1) {
+        std::vector<int> up, down;
+        try { gmsh::model::getAdjacencies(1, dt.second, up, down); } catch(...) { up.clear(); }
+        std::sort(up.begin(), up.end());
+        seam = up.size() == 1 || (up.size() == 2 && up[0] == up[1]);
+      }
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t> > element_tags, nodes;
+      gmsh::model::mesh::getElements(types, element_tags, nodes, dim, dt.second);
+      for(std::size_t k = 0; k < types.size(); ++k) {
+        std::string name;
+        int edim = 0, order = 0, num_nodes = 0, num_primary = 0;
+        std::vector<double> local;
+        gmsh::model::mesh::getElementProperties(types[k], name, edim, order, num_nodes, local, num_primary);
+        if(num_nodes <= 0) continue;
+        const std::size_t n = nodes[k].size() / std::size_t(num_nodes);
+        const std::vector<std::size_t>& nk = nodes[k];
+        const std::string family = name.substr(0, name.find(' '));
+        for(std::size_t e = 0; e < n; ++e) {
+          const std::size_t* c = nk.data() + e * std::size_t(num_nodes);
+          if(edim == 3) {
+            if(family == "Tetrahedron") {
+              soup.tetrahedra.push_back({node(c[0]), node(c[1]), node(c[2]), node(c[3])});
+            } else {
+              ++other_volume_cells[family];
+            }
+          } else if(edim == 2 && family == "Triangle") {
+            soup.triangles.push_back({node(c[0]), node(c[1]), node(c[2])});
+            soup.triangle_patches.push_back(dt.second);
+          } else if(edim == 1 && !seam) {
+            soup.feature_edges.push_back({node(c[0]), node(c[1])});
+            soup.feature_edge_curves.push_back(dt.second);
+          } else if(edim == 0) {
+            corner_candidates.insert(node(c[0]));
+          }
+        }
+      }
+    }
+  }
+  if(!other_volume_cells.empty()) {
+    std::string list;
+    for(const auto& kv : other_volume_cells)
+      list += (list.empty() ? "" : ", ") + std::to_string(kv.second) + " " + kv.first;
+    throw Input_error(source, 0, "the mesh has volume elements other than tetrahedra (" + list + " element(s), with " +
+                      std::to_string(soup.tetrahedra.size()) + " tetrahedra); they would be lost: mesh with "
+                      "tetrahedra only (gmsh: no Recombine, Mesh.SubdivisionAlgorithm = 0) and retry");
+  }
+  soup.corners = select_corners(soup, corner_candidates);
+}
+
+} // namespace internal_gmsh
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Reads a gmsh mesh file (`.msh`, formats 4.1 ASCII and binary, 2.2 ASCII and binary, read by
+/// the gmsh library, the format's reference) into `soup`.
+///
+/// Tetrahedra of any order give their four corner nodes; triangles become tagged boundary
+/// triangles (patch = the gmsh surface entity tag), line elements feature edges (curve = the
+/// gmsh curve entity tag; seam curves, which bound a single surface, are left out), point
+/// elements corners (where the feature curves meet at an angle or where their number is not 2).
+/// A file with triangles but no volume element is taken as a closed surface and tetrahedralized
+/// (see `tetrahedralize_surface()`, whose named parameters apply).
+///
+/// gmsh runs in a child process (where `fork()` exists): silent, from a clean state at every
+/// call, and a crash of the library on a hostile file becomes an `Input_error`.
+///
+/// \param filename the `.msh` file
+/// \param soup the output (overwritten)
+/// \param np the named parameters of `tetrahedralize_surface()`, for surface meshes
+/// \throws Input_error naming the file and the problem: unreadable or malformed file (gmsh's
+///         message), volume elements other than tetrahedra (with their counts), no element.
+template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
+               const NamedParameters& np = CGAL::parameters::default_values());
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Imports a CAD part with gmsh and OpenCASCADE (`.step`/`.stp`, `.brep`, `.iges`/`.igs`),
+/// tetrahedralizes its solids with gmsh (mesh size `mesh_size`, by default the diagonal of the
+/// bounding box over 20) and stores the result in `soup`, with the CAD's structure as hints: the
+/// triangles of each CAD face are tagged with the face (surface patch), the edges of each CAD curve
+/// are feature edges of that curve (seams of periodic faces excluded), and the CAD vertices where
+/// curves meet at an angle are corners.
+///
+/// gmsh runs in a child process (where `fork()` exists): silent, from a clean state at every
+/// call, and a crash of the library on a hostile file becomes an `Input_error`.
+///
+/// \param filename the CAD file
+/// \param soup the output (overwritten)
+/// \param np an optional sequence of named parameters among:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{mesh_size}
+///     \cgalParamDescription{target edge length of the tetrahedra, in the units of the part}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{bounding-box diagonal / 20}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Input_error naming the file and the problem: unreadable file (gmsh's message), a part
+///         without any solid (only surfaces or curves), a meshing failure, a non-positive
+///         `mesh_size`.
+template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
+              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double size = choose_parameter(get_parameter(np, internal_np::mesh_size), 0.);
+  if(!(size >= 0) || !std::isfinite(size))
+    throw Input_error(filename, 0, "the mesh size must be a positive number");
+  internal_gmsh::check_readable(filename);
+  const std::string bytes = internal::run_isolated([&]() -> std::string {
+    internal_gmsh::start();
+    internal_gmsh::call(filename, "read the CAD file", [&] { gmsh::open(filename); });
+    std::vector<std::pair<int, int> > volumes, surfaces;
+    gmsh::model::getEntities(volumes, 3);
+    gmsh::model::getEntities(surfaces, 2);
+    if(volumes.empty())
+      throw Input_error(filename, 0, "the CAD file has no solid (" + std::to_string(surfaces.size()) +
+                        " surfaces, no volume): export the part as a solid (closed shells sewn into a volume) and retry");
+    double xmin = 0, ymin = 0, zmin = 0, xmax = 0, ymax = 0, zmax = 0;
+    gmsh::model::getBoundingBox(-1, -1, xmin, ymin, zmin, xmax, ymax, zmax);
+    const double diagonal = std::sqrt((xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin) +
+                                      (zmax - zmin) * (zmax - zmin));
+    if(!(diagonal > 0) || !std::isfinite(diagonal))
+      throw Input_error(filename, 0, "the part has an empty or infinite bounding box");
+    const double h = size > 0 ? size : diagonal / 20;
+    gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    internal_gmsh::call(filename, "tetrahedralize the part (mesh size " + std::to_string(h) + ")",
+                        [&] { gmsh::model::mesh::generate(3); });
+    Tetrahedral_soup_3<Point> result;
+    internal_gmsh::extract(filename, result);
+    if(result.tetrahedra.empty())
+      throw Input_error(filename, 0, "gmsh produced no tetrahedra (" + internal_gmsh::last_error("no message") +
+                        "); check that the part is a valid solid, or try another --mesh-size");
+    return internal::serialize_soup(result);
+  }, filename, "gmsh");
+  soup = Tetrahedral_soup_3<Point>();
+  internal::deserialize_soup(bytes, soup);
+  soup.source = filename;
+}
+
+template <class Point, class NamedParameters>
+void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup, const NamedParameters& np)
+{
+  internal_gmsh::check_readable(filename);
+  const std::string bytes = internal::run_isolated([&]() -> std::string {
+    internal_gmsh::start();
+    internal_gmsh::call(filename, "read the mesh file", [&] { gmsh::open(filename); });
+    Tetrahedral_soup_3<Point> result;
+    internal_gmsh::extract(filename, result);
+    if(result.tetrahedra.empty() && result.triangles.empty())
+      throw Input_error(filename, 0, "the file has no tetrahedra and no triangles (" +
+                        internal_gmsh::last_error("no element") + "); mesh the volume (gmsh -3) and retry");
+    return internal::serialize_soup(result);
+  }, filename, "gmsh");
+  soup = Tetrahedral_soup_3<Point>();
+  internal::deserialize_soup(bytes, soup);
+  soup.source = filename;
+  if(soup.tetrahedra.empty()) {
+    // a surface mesh: tetrahedralized like the other surface formats
+    std::vector<internal::Surface_kernel::Point_3> points;
+    for(const Point& p : soup.points)
+      points.push_back(internal::Surface_kernel::Point_3(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])));
+    std::vector<std::vector<std::size_t> > polygons;
+    for(const auto& t : soup.triangles) polygons.push_back({t[0], t[1], t[2]});
+    internal::Checked_surface sm;
+    internal::surface_from_polygon_soup(points, polygons, filename, sm);
+    tetrahedralize_checked_surface(sm, soup, np);
+  }
+}
+
+} // namespace IO
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_IO_READ_GMSH_H
