@@ -35,7 +35,7 @@ grep -q "k = 0 (phi < 45, not meshable): 8" "$tmp/out" || fail "info output lack
 expect_error 3 "does_not_exist.vtk: cannot open file" info "$tmp/does_not_exist.vtk"
 expect_error 3 "malformed_number.vtk:7: malformed number" info "$broken/malformed_number.vtk"
 expect_error 3 "degenerate (zero volume)" info "$broken/degenerate_tetrahedron.vtk"
-expect_error 3 "binary VTK files are not supported" info "$broken/binary.vtk"
+expect_error 3 "binary.vtk:5: POINTS: the binary block of 15 values of type double is truncated" info "$broken/binary.vtk"
 expect_error 2 "unknown command" frobnicate
 expect_error 2 "unknown option --nope" info "$data/n13c_acute_line.vtk" --nope
 expect_error 2 "expects a number" info "$data/cube.off" --max-volume abc
@@ -220,6 +220,37 @@ for k in ('frame_field', 'integer_grid_map', 'extraction', 'smoothing', 'hex_mes
 expect_error 2 "either --target-edge-length or --hexahedra" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --hexahedra 8 --target-edge-length 0.5
 expect_error 2 "expects a positive length" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --target-edge-length -1
 [ -z "$(ls -A "$tmp/x")" ] || fail "failed remesh runs left files behind: $(ls "$tmp/x")"
+
+# Inputs (issue 13): a CAD part and gmsh files, everyday file variants, flawed surfaces and meshes
+inputs="$root/test/Hexahedral_remeshing/data/inputs"
+"$hexmesh" info "$inputs/box_with_cavity.step" --json "$tmp/step.json" > /dev/null 2> "$tmp/err" \
+  || fail "info on a STEP part: $(cat "$tmp/err")"
+[ ! -s "$tmp/err" ] || fail "info on a STEP part printed on stderr (gmsh not silenced): $(cat "$tmp/err")"
+for kv in '"feature_curves": 24' '"corners": 16' '"surface_patches": 12' '"boundary_components": 2' '"components": 1'; do
+  grep -q "$kv" "$tmp/step.json" || fail "info on the STEP part: JSON lacks $kv: $(cat "$tmp/step.json")"
+done
+for f in box_with_cavity_v41.msh box_with_cavity_v22.msh cube_v51.vtk cube_quadratic_tets.vtk cube_extra_blocks.mesh \
+         flipped_facets.stl soup_duplicated_vertices.off soup_duplicated_vertices.obj cavity.off two_bodies.off; do
+  "$hexmesh" info "$inputs/$f" > /dev/null 2> "$tmp/err" || fail "info $f: $(cat "$tmp/err")"
+done
+"$hexmesh" frames "$inputs/box_with_cavity_v41.msh" --quiet > /dev/null 2> "$tmp/err" || fail "frames on .msh 4.1: $(cat "$tmp/err")"
+"$hexmesh" frames "$inputs/box_with_cavity.step" --mesh-size 0.5 --quiet > /dev/null 2> "$tmp/err" \
+  || fail "frames on a STEP part: $(cat "$tmp/err")"
+expect_error 3 "self_intersecting.off: the surface intersects itself" info "$inputs/self_intersecting.off"
+expect_error 3 "touching_bodies.stl: the surface intersects itself" info "$inputs/touching_bodies.stl"
+expect_error 3 "open_surface.off: the surface is not closed" info "$inputs/open_surface.off"
+expect_error 3 "shared_edge.off: the surface is not manifold" info "$inputs/shared_edge.off"
+expect_error 3 "other than tetrahedra (1 hexahedron cell(s), with 6 tetrahedra)" info "$inputs/tets_and_hexahedron.vtk"
+expect_error 3 "other than tetrahedra (1 Prisms, with 6 Tetrahedra)" info "$inputs/tets_and_prism.mesh"
+expect_error 3 "cracked_interface.vtk: 4 vertices of the tetrahedra coincide" info "$inputs/cracked_interface.vtk"
+"$hexmesh" info "$inputs/cracked_interface.vtk" --coincident-vertices merge --json "$tmp/merged.json" > /dev/null 2>&1 \
+  || fail "info --coincident-vertices merge"
+grep -q '"components": 1' "$tmp/merged.json" || fail "merged crack: $(cat "$tmp/merged.json")"
+"$hexmesh" info "$inputs/cracked_interface.vtk" --coincident-vertices keep --json "$tmp/kept.json" > /dev/null 2>&1 \
+  || fail "info --coincident-vertices keep"
+grep -q '"components": 2' "$tmp/kept.json" || fail "kept crack: $(cat "$tmp/kept.json")"
+expect_error 2 "expects refuse, merge or keep" info "$inputs/cracked_interface.vtk" --coincident-vertices glue
+expect_error 2 "expects a positive length" info "$inputs/box_with_cavity.step" --mesh-size 0
 
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"
