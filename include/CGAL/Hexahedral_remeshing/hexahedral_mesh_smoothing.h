@@ -10,6 +10,7 @@
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/corner_tet_problem.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/hex_boundary.h>
+#include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/local_smoothing.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/reference_projector.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/vertex_constraints.h>
 #include <CGAL/Hexahedral_remeshing/internal/untangling/foldover_free_map.h>
@@ -188,6 +189,12 @@ struct Hexahedral_smoothing_report
   int outer_iterations = 0;
   /// Inner (L-BFGS) iterations of the foldover-free minimizations, summed.
   int inner_iterations = 0;
+  /// Local untangling sweeps run (see `smooth_hexahedral_mesh()`).
+  int untangling_sweeps = 0;
+  /// True if the local untangling left inverted hexahedra and the global foldover-free minimization ran.
+  bool global_untangling_run = false;
+  /// Vertex moves accepted by the local sweeps, summed over the sweeps.
+  std::size_t vertex_moves = 0;
   /// Wall-clock seconds.
   double seconds = 0;
 };
@@ -386,9 +393,7 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
   auto minimize = [&](bool boundary_fixed, const internal::Foldover_free_options& options) {
     const internal::Hex_vertex_dofs dofs = internal::make_hex_vertex_dofs(work.points, constraints, projector, boundary_fixed);
     if(dofs.n == 0) return;
-    // anchor: moving a sliding vertex by its hex size costs about as much as 10 ideal corners
-    const internal::Foldover_free_problem problem =
-      internal::make_corner_tet_problem(work, work.points, dofs, size, boundary_fixed ? 0. : 10.);
+    const internal::Foldover_free_problem problem = internal::make_corner_tet_problem(work, work.points, dofs, size, 0.);
     Eigen::VectorXd y = Eigen::VectorXd::Zero(dofs.n);
     const internal::Foldover_free_result r = internal::minimize_foldover_free(problem, y, options);
     report.outer_iterations += r.outer_iterations;
@@ -396,50 +401,58 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
     internal::apply_hex_vertex_dofs(dofs, y, work.points);
   };
 
-  if(report.before.non_positive > 0) {
+  // constrained vertices off the reference are put on it first: every later move keeps them there
+  internal::project_on_reference(work.points, constraints, projector);
+  Hexahedral_mesh_quality current = internal::hex_mesh_quality(work, constraints, projector);
+  const std::size_t max_sweeps = std::size_t((std::max)(iterations, 0));
+  internal::Local_smoothing_options local_options;
+  std::vector<char> active(V, 1);
+
+  if(current.non_positive > 0) {
     report.untangling_run = true;
-    // the quality rounds optimize further with the barrier: stop as soon as nothing is inverted
-    internal::Foldover_free_options untangling;
-    untangling.stop_when_untangled = true;
-    minimize(true, untangling);
-    const Hexahedral_mesh_quality q = internal::hex_mesh_quality(work, constraints, projector);
-    offer(q, 0);
-    visitor.after_untangling(q);
+    {
+      // local untangling: the sweeps only accept moves that lower no star's minimum scaled Jacobian
+      // nor add a non-positive hexahedron; a few sweeps repair isolated foldovers
+      internal::Local_hex_smoother smoother(work, constraints, projector, size, local_options);
+      for(int s = 0; s < 20; ++s) {
+        ++report.untangling_sweeps;
+        const std::size_t moves = smoother.sweep(active);
+        report.vertex_moves += moves;
+        std::size_t bad = 0;
+        for(double x : smoother.scaled_jacobians()) bad += x <= 0 ? 1 : 0;
+        if(bad == 0 || moves == 0) break;
+      }
+    }
+    current = internal::hex_mesh_quality(work, constraints, projector);
+    if(current.non_positive > 0) {
+      // what the stars could not repair alone: the global foldover-free minimization of the interior
+      // (boundary fixed), stopped as soon as nothing is inverted
+      internal::Foldover_free_options untangling;
+      untangling.stop_when_untangled = true;
+      minimize(true, untangling);
+      current = internal::hex_mesh_quality(work, constraints, projector);
+      report.global_untangling_run = true;
+    }
+    offer(current, 0);
+    visitor.after_untangling(current);
+    std::fill(active.begin(), active.end(), char(1));
   }
 
-  internal::Foldover_free_options options;
-  // rounds need not converge: the next round re-linearizes anyway
-  options.max_outer_iterations = 10;
-  options.max_inner_iterations = 300;
-  // more weight on the shape (scale-invariant) term than for the untangling: quality, not size
-  options.theta = 0.2;
-  for(int round = 1; round <= iterations; ++round) {
-    const std::vector<Point> previous = work.points;
-    minimize(false, options);
-    const std::vector<Point> target = work.points;
-    // the projection may spoil what the linearized slide gained: try shorter steps towards the
-    // optimum as well (each projected) and go on from the best of them
-    std::vector<Point> round_best;
-    Hexahedral_mesh_quality round_quality;
-    for(int k = 0; k < 4; ++k) {
-      const double alpha = std::ldexp(1., -k);
-      for(std::size_t v = 0; v < V; ++v)
-        work.points[v] = k == 0 ? target[v] : previous[v] + alpha * (target[v] - previous[v]);
-      internal::project_on_reference(work.points, constraints, projector);
+  if(max_sweeps > 0) {
+    internal::Local_hex_smoother smoother(work, constraints, projector, size, local_options);
+    for(std::size_t sweep = 1; sweep <= max_sweeps; ++sweep) {
+      const std::size_t moves = smoother.sweep(active);
+      report.vertex_moves += moves;
+      report.rounds = int(sweep);
       const Hexahedral_mesh_quality q = internal::hex_mesh_quality(work, constraints, projector);
-      if(k == 0 || better_than(q, round_quality)) {
-        round_quality = q;
-        round_best = work.points;
-      }
-      if(q.non_positive == 0 && q.min_scaled_jacobian >= best_quality.min_scaled_jacobian) break;
+      const bool accepted = offer(q, int(sweep));
+      visitor.after_round(int(sweep), q, accepted);
+      // early exit: nothing moved, or a sweep that gains almost nothing
+      const bool stalled = q.min_scaled_jacobian <= current.min_scaled_jacobian + 1e-6 &&
+                           q.mean_scaled_jacobian <= current.mean_scaled_jacobian + 1e-4;
+      current = q;
+      if(moves == 0 || stalled) break;
     }
-    work.points = round_best;
-    report.rounds = round;
-    const bool accepted = offer(round_quality, round);
-    visitor.after_round(round, round_quality, accepted);
-    double moved = 0;
-    for(std::size_t v = 0; v < V; ++v) moved = (std::max)(moved, CGAL::squared_distance(previous[v], work.points[v]));
-    if(std::sqrt(moved) <= on_reference_tolerance) break;
   }
 
   hexes.points = best_points;
