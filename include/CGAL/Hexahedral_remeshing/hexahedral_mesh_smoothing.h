@@ -11,6 +11,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/corner_tet_problem.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/hex_boundary.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/local_smoothing.h>
+#include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/reference_features.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/reference_projector.h>
 #include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/vertex_constraints.h>
 #include <CGAL/Hexahedral_remeshing/internal/untangling/foldover_free_map.h>
@@ -129,6 +130,7 @@ enum class Hexahedral_smoothing_boundary {
 namespace internal_np {
 enum smoothing_boundary_t { smoothing_boundary };
 enum smoothing_fixed_vertices_t { smoothing_fixed_vertices };
+enum smoothing_sharp_angle_t { smoothing_sharp_angle };
 } // namespace internal_np
 
 namespace parameters {
@@ -137,9 +139,13 @@ namespace parameters {
 template <class T> unspecified_type smoothing_boundary(const T& value);
 /// Hex smoothing: vertices that must not move (`std::vector<bool>` indexed by vertex, default empty).
 template <class T> unspecified_type smoothing_fixed_vertices(const T& value);
+/// Hex smoothing: angle in degrees between the normals of two reference triangles above which their
+/// common edge is sharp (`double`, default 30; <= 0: no detection).
+template <class T> unspecified_type smoothing_sharp_angle(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_boundary)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_fixed_vertices)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_sharp_angle)
 #endif
 } // namespace parameters
 
@@ -181,6 +187,8 @@ struct Hexahedral_smoothing_report
   std::size_t curve_vertices = 0;
   /// Number of fixed vertices (corners, fixed by `smoothing_boundary` or `smoothing_fixed_vertices`).
   std::size_t fixed_vertices = 0;
+  /// Number of feature polylines detected on the reference by dihedral angle (when it had none).
+  std::size_t detected_feature_polylines = 0;
   /// Quality rounds run (optimization + projection onto the reference each).
   int rounds = 0;
   /// The state returned: -1 the input, 0 the untangled state, r >= 1 the state after round r.
@@ -234,7 +242,7 @@ inline Hexahedral_mesh_quality hex_mesh_quality(const Hexahedral_mesh_3& mesh, c
   for(std::size_t v = 0; v < constraints.size(); ++v) {
     double d = 0;
     if(constraints[v].kind == Hex_vertex_kind::SURFACE)
-      d = reference.distance_to_surface(mesh.points[v]);
+      d = reference.distance_to_surface(mesh.points[v], constraints[v].patch);
     else if(constraints[v].kind == Hex_vertex_kind::CURVE)
       reference.closest_on_polyline(constraints[v].polyline, mesh.points[v], nullptr, &d);
     q.max_constraint_distance = (std::max)(q.max_constraint_distance, d);
@@ -246,7 +254,7 @@ inline void project_on_reference(std::vector<Hexahedral_mesh_3::Point_3>& points
                                  const std::vector<Hex_vertex_constraint>& constraints, const Reference_projector& reference)
 {
   for(std::size_t v = 0; v < points.size(); ++v) {
-    if(constraints[v].kind == Hex_vertex_kind::SURFACE) points[v] = reference.closest_on_surface(points[v]);
+    if(constraints[v].kind == Hex_vertex_kind::SURFACE) points[v] = reference.closest_on_surface(points[v], nullptr, constraints[v].patch);
     else if(constraints[v].kind == Hex_vertex_kind::CURVE)
       points[v] = reference.closest_on_polyline(constraints[v].polyline, points[v]);
   }
@@ -332,8 +340,18 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
         throw Input_error("<memory>", 0, "hexahedron " + std::to_string(h) + ": vertex index " + std::to_string(v) +
                                              " out of range (" + std::to_string(V) + " vertices)");
 
+  const double sharp_angle = choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.);
+
   Hexahedral_smoothing_report report;
-  const internal::Reference_projector projector(reference);
+  // the surface patches between sharp edges (given curves, and by dihedral angle); without given
+  // curves the sharp edges become the feature curves (a reference read from a surface file)
+  Hexahedral_smoothing_reference augmented = reference;
+  std::vector<int> patches;
+  if(sharp_angle > 0) {
+    patches = internal::reference_patches(augmented, sharp_angle * CGAL_PI / 180., reference.feature_polylines.empty());
+    report.detected_feature_polylines = augmented.feature_polylines.size() - reference.feature_polylines.size();
+  }
+  const internal::Reference_projector projector(augmented, patches);
   const std::vector<std::array<std::uint32_t, 4> > quads = internal::hex_boundary_quads(hexes);
   const int keep = boundary == Hexahedral_smoothing_boundary::SLIDE ? 0 : (boundary == Hexahedral_smoothing_boundary::FIX_FEATURES ? 1 : 2);
   const std::vector<internal::Hex_vertex_constraint> constraints =

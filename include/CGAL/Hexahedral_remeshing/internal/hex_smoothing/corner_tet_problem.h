@@ -49,7 +49,7 @@ inline Hex_vertex_dofs make_hex_vertex_dofs(const std::vector<Hexahedral_mesh_3:
     else if(boundary_fixed || c.kind == Hex_vertex_kind::FIXED) k = 0;
     else if(c.kind == Hex_vertex_kind::SURFACE) {
       Vector_3 n;
-      reference.closest_on_surface(points[v], &n);
+      reference.closest_on_surface(points[v], &n, c.patch);
       const Eigen::Vector3d nn(n.x(), n.y(), n.z());
       // any vector not parallel to n gives the first tangent; the least aligned axis is the stablest
       int axis = 0;

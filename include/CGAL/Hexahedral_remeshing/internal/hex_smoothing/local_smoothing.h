@@ -304,7 +304,7 @@ private:
     }
     if(c.kind == Hex_vertex_kind::SURFACE) {
       Vector_3 n;
-      m_reference.closest_on_surface(p, &n);
+      m_reference.closest_on_surface(p, &n, c.patch);
       const Eigen::Vector3d nn(n.x(), n.y(), n.z());
       int axis = 0;
       for(int a = 1; a < 3; ++a)
@@ -330,7 +330,7 @@ private:
   {
     const Hex_vertex_constraint& c = m_constraints[v];
     Point p(x[0], x[1], x[2]);
-    if(c.kind == Hex_vertex_kind::SURFACE) p = m_reference.closest_on_surface(p);
+    if(c.kind == Hex_vertex_kind::SURFACE) p = m_reference.closest_on_surface(p, nullptr, c.patch);
     else if(c.kind == Hex_vertex_kind::CURVE) p = m_reference.closest_on_polyline(c.polyline, p);
     else return;
     x = Eigen::Vector3d(p.x(), p.y(), p.z());

@@ -36,16 +36,33 @@ public:
   typedef CGAL::AABB_traits<K, Primitive> Traits;
   typedef CGAL::AABB_tree<Traits> Tree;
 
+  // `patch` (empty, or one id >= 0 per triangle of `ref`): the surface patches a vertex can be
+  // kept on (closest point on its own patch, so that it cannot jump across a sharp edge).
   template <class Reference>
-  explicit Reference_projector(const Reference& ref)
+  explicit Reference_projector(const Reference& ref, const std::vector<int>& patch = std::vector<int>())
   {
-    for(const auto& t : ref.triangles) {
+    std::vector<int> kept_patch;
+    for(std::size_t i = 0; i < ref.triangles.size(); ++i) {
+      const auto& t = ref.triangles[i];
       const Triangle_3 tri(ref.points[t[0]], ref.points[t[1]], ref.points[t[2]]);
-      if(!tri.is_degenerate()) m_triangles.push_back(tri);
+      if(tri.is_degenerate()) continue;
+      m_triangles.push_back(tri);
+      kept_patch.push_back(i < patch.size() ? patch[i] : 0);
     }
     if(!m_triangles.empty()) {
       m_tree.reset(new Tree(m_triangles.begin(), m_triangles.end()));
       m_tree->accelerate_distance_queries();
+    }
+    if(!patch.empty()) {
+      int P = 0;
+      for(int q : kept_patch) P = (std::max)(P, q + 1);
+      m_patch_triangles.resize(std::size_t(P));
+      for(std::size_t i = 0; i < m_triangles.size(); ++i) m_patch_triangles[std::size_t(kept_patch[i])].push_back(m_triangles[i]);
+      m_triangle_patch = kept_patch;
+      for(const auto& tris : m_patch_triangles) {
+        m_patch_trees.emplace_back(tris.empty() ? nullptr : new Tree(tris.begin(), tris.end()));
+        if(!tris.empty()) m_patch_trees.back()->accelerate_distance_queries();
+      }
     }
     for(const auto& pl : ref.feature_polylines) {
       std::vector<std::pair<Point_3, Point_3> > segments;
@@ -80,9 +97,10 @@ public:
 
   // Closest point of the surface; `normal` (if given) receives the unit normal of its triangle.
   // \pre has_surface()
-  Point_3 closest_on_surface(const Point_3& p, Vector_3* normal = nullptr) const
+  // `patch` >= 0: the closest point of that patch only.
+  Point_3 closest_on_surface(const Point_3& p, Vector_3* normal = nullptr, int patch = -1) const
   {
-    const auto cp = m_tree->closest_point_and_primitive(p);
+    const auto cp = tree(patch).closest_point_and_primitive(p);
     if(normal != nullptr) {
       Vector_3 n = cp.second->supporting_plane().orthogonal_vector();
       *normal = n / std::sqrt(n.squared_length());
@@ -90,10 +108,20 @@ public:
     return cp.first;
   }
 
-  double distance_to_surface(const Point_3& p) const
+  double distance_to_surface(const Point_3& p, int patch = -1) const
   {
-    return std::sqrt(m_tree->squared_distance(p));
+    return std::sqrt(tree(patch).squared_distance(p));
   }
+
+  // The patch of the triangle closest to p (0 without patches).
+  int patch_of(const Point_3& p) const
+  {
+    if(m_triangle_patch.empty()) return 0;
+    const auto cp = m_tree->closest_point_and_primitive(p);
+    return m_triangle_patch[std::size_t(cp.second - m_triangles.begin())];
+  }
+
+  std::size_t number_of_patches() const { return m_patch_trees.size(); }
 
   // Closest point of polyline `c` and the unit tangent of its segment there. \pre has_polyline(c)
   Point_3 closest_on_polyline(std::size_t c, const Point_3& p, Vector_3* tangent = nullptr,
@@ -147,8 +175,17 @@ public:
   const std::vector<Triangle_3>& triangles() const { return m_triangles; }
 
 private:
+  const Tree& tree(int patch) const
+  {
+    if(patch >= 0 && std::size_t(patch) < m_patch_trees.size() && m_patch_trees[std::size_t(patch)]) return *m_patch_trees[std::size_t(patch)];
+    return *m_tree;
+  }
+
   std::vector<Triangle_3> m_triangles;
   std::unique_ptr<Tree> m_tree;
+  std::vector<int> m_triangle_patch;
+  std::vector<std::vector<Triangle_3> > m_patch_triangles;
+  std::vector<std::unique_ptr<Tree> > m_patch_trees;
   std::vector<std::vector<std::pair<Point_3, Point_3> > > m_polylines;
   std::vector<Point_3> m_corners;
   double m_diagonal = 0;

@@ -31,6 +31,7 @@ struct Hex_vertex_constraint
 {
   Hex_vertex_kind kind = Hex_vertex_kind::INTERIOR;
   std::size_t polyline = 0; // for CURVE
+  int patch = -1;           // for SURFACE: the reference patch it stays on (-1: the whole surface)
   bool on_boundary = false; // topologically on the hex boundary or tagged BOUNDARY
 };
 
@@ -50,8 +51,7 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
     for(std::uint32_t v : q) c[v].on_boundary = true;
   const bool tagged = mesh.vertex_tags.size() == n;
   std::vector<double> shortest(n, (std::numeric_limits<double>::max)());
-  if(!tagged)
-    for(const auto& h : mesh.hexahedra)
+  for(const auto& h : mesh.hexahedra)
       for(const auto& e : hex_edges()) {
         const double l = std::sqrt(CGAL::squared_distance(mesh.points[h[e[0]]], mesh.points[h[e[1]]]));
         shortest[h[e[0]]] = (std::min)(shortest[h[e[0]]], l);
@@ -67,7 +67,10 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
                        (t & Hexahedral_mesh_3::CORNER) != 0;
       corner = (t & Hexahedral_mesh_3::CORNER) != 0;
       curve = (t & Hexahedral_mesh_3::FEATURE_CURVE) != 0;
-    } else if(cv.on_boundary) {
+    }
+    // a vertex tagged as a plain boundary vertex may still lie on a feature the tags did not know
+    // (features detected on the reference by dihedral angle)
+    if(cv.on_boundary && !corner && !curve && (!tagged || reference.number_of_polylines() > 0 || !reference.corners().empty())) {
       const double tol = 1e-3 * shortest[v];
       corner = reference.distance_to_corners(p) <= tol;
       if(!corner && reference.number_of_polylines() > 0) {
@@ -82,6 +85,7 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
       cv.kind = Hex_vertex_kind::CURVE;
       cv.polyline = reference.nearest_polyline(p);
     } else cv.kind = reference.has_surface() ? Hex_vertex_kind::SURFACE : Hex_vertex_kind::FIXED;
+    if(cv.kind == Hex_vertex_kind::SURFACE) cv.patch = reference.number_of_patches() > 0 ? reference.patch_of(p) : -1;
     if(cv.kind == Hex_vertex_kind::CURVE && keep >= 1) cv.kind = Hex_vertex_kind::FIXED;
     if(cv.on_boundary && keep >= 2) cv.kind = Hex_vertex_kind::FIXED;
     if(v < user_fixed.size() && user_fixed[v]) cv.kind = Hex_vertex_kind::FIXED;
