@@ -10,6 +10,7 @@
 #include "command_extract.h"
 #include "command_parametrize.h"
 #include "command_remesh.h"
+#include "command_smooth.h"
 
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
@@ -82,6 +83,15 @@ const char* usage =
   "                            ParaView). A map that is not integer-grid (jumps not in the 24\n"
   "                            rotations with integer shifts, boundary off the integer planes) is\n"
   "                            refused (exit 3); cells a broken map cannot complete are left out.\n"
+  "  smooth IN_HEX --reference TETS_OR_SURFACE --out OUT.mesh|OUT.vtk [--json FILE]\n"
+  "         [--iterations N] [--quiet]\n"
+  "                            untangles and smooths a hex mesh (.mesh or .vtk) against the boundary\n"
+  "                            of a tet mesh or a closed surface: boundary vertices stay on it,\n"
+  "                            feature vertices on their curve (sharp edges found by dihedral angle\n"
+  "                            when the reference has none), corners fixed; the minimum scaled\n"
+  "                            Jacobian never decreases. N: maximum number of sweeps (default 10).\n"
+  "                            Prints the quality before/after (min, mean SJ, share below 0.3,\n"
+  "                            SJ <= 0, Hausdorff distance) and the seconds.\n"
   "\n"
   "Inputs: .vtk (VTK legacy ASCII unstructured grid, gmsh style), .mesh (MEDIT),\n"
   "        .off .obj .stl .ply (closed surfaces, tetrahedralized with TetGen).\n"
@@ -116,6 +126,8 @@ int main(int argc, char** argv)
     if(command == "extract")
       return hexmesh::command_extract(
         hexmesh::Arguments(argc, argv, 2, hexmesh::extract_options(), hexmesh::extract_flags()));
+    if(command == "smooth")
+      return hexmesh::command_smooth(hexmesh::Arguments(argc, argv, 2, hexmesh::smooth_options(), hexmesh::smooth_flags()));
     throw hexmesh::Usage_error("unknown command '" + command + "'");
   } catch(const hexmesh::Usage_error& e) {
     std::cerr << "hexmesh: " << e.what() << " (see hexmesh --help)\n";
