@@ -348,31 +348,69 @@ TEST(IntegerGridMap, LPrismConcaveEdgeHasValenceThree)
   EXPECT_NEAR(r.check.parameter_volume, 3.0 * 4 * 4 * 4, 1e-9);
 }
 
-TEST(IntegerGridMap, DISABLED_PrismWithOneValenceThreeCurve)
+// Known deviations of the singular models: the test fails if a count gets worse. Whatever the
+// deviations, the map stays seamless (every transition exact), puts every boundary face on an integer
+// plane and every singular edge on an integer line.
+struct Known
 {
-  const Mesh m = from_off("hexrem_igm_prism", prism_30_60_90_off(), 0.0005);
-  const Map_run r = run(m, HR::parameters::target_edge_length(0.2));
-  ASSERT_EQ(r.field.singularities.number_of_curves(3), 1u);
-  std::printf("prism: status %d inverted %zu degenerate %zu jogs %zu/%zu cut %zu int %zu rounds %d stiff %d\n",
-              int(r.report.status), r.check.inverted, r.check.degenerate, r.report.jogs, r.report.degenerate_jogs,
-              r.report.cut_faces, r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds);
-  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
-  expect_valid(r.check);
+  std::size_t inverted, degenerate, valence_mismatches, interior_valence_mismatches;
+};
+
+void expect_at_most(const Check& c, const Known& k)
+{
+  EXPECT_EQ(c.bad_transitions, 0u);
+  EXPECT_EQ(c.boundary_faces_off_plane, 0u);
+  EXPECT_EQ(c.singular_edges_off_line, 0u);
+  EXPECT_EQ(c.valence_checked, c.boundary_edges);
+  EXPECT_LE(c.inverted, k.inverted);
+  EXPECT_LE(c.degenerate, k.degenerate);
+  EXPECT_LE(c.valence_mismatches, k.valence_mismatches);
+  EXPECT_LE(c.interior_valence_mismatches, k.interior_valence_mismatches);
 }
 
-TEST(IntegerGridMap, DISABLED_CylinderWithFourValenceThreeCurves)
+void print(const char* name, const Map_run& r)
+{
+  std::printf("%-24s status %d inverted %zu degenerate %zu (flat by construction %zu) jogs %zu (degenerate %zu) "
+              "valences %zu/%zu interior mismatches %zu cut %zu int %zu rounds %d stiffening %d untangled %d "
+              "disagreeing faces %zu h %.3g %.2f s\n",
+              name, int(r.report.status), r.check.inverted, r.check.degenerate, r.report.structurally_flat_tetrahedra,
+              r.report.jogs, r.report.degenerate_jogs, r.check.boundary_edges - r.check.valence_mismatches,
+              r.check.boundary_edges, r.check.interior_valence_mismatches, r.report.cut_faces,
+              r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
+              int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds);
+}
+
+// Known failure: the field's valence-3 curve runs in the 30-degree wedge within one tetrahedron of
+// the boundary (some of its vertices are on the faces of the wedge), so its integer line lies in a
+// boundary plane and the slab between them collapses.
+TEST(IntegerGridMap, PrismWithOneValenceThreeCurve)
+{
+  const Mesh m = from_off("hexrem_igm_prism", prism_30_60_90_off(), 0.002);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.2));
+  ASSERT_EQ(r.field.singularities.number_of_curves(3), 1u);
+  print("prism 30-60-90", r);
+  std::size_t on_boundary = 0;
+  for(Index v : r.field.singularities.curves.front().vertices) on_boundary += m.is_boundary_vertex(v);
+  EXPECT_GT(on_boundary, 2u); // the reason of the failure: more than the two cap endpoints
+  expect_at_most(r.check, Known{661, 86, 91, 464});
+}
+
+TEST(IntegerGridMap, CylinderWithFourValenceThreeCurves)
 {
   const Mesh m = load(example_data + "/cylinder.off", 0.002);
   const Map_run r = run(m, HR::parameters::target_edge_length(0.25));
   EXPECT_EQ(r.field.singularities.number_of_curves(3), 4u);
-  std::printf("cylinder: status %d inverted %zu degenerate %zu jogs %zu/%zu cut %zu int %zu rounds %d stiff %d\n",
-              int(r.report.status), r.check.inverted, r.check.degenerate, r.report.jogs, r.report.degenerate_jogs,
-              r.report.cut_faces, r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds);
-  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
-  expect_valid(r.check);
+  print("cylinder", r);
+  // the flat tetrahedra are those the jogs of the curves collapse (three corners on one line)
+  EXPECT_EQ(r.check.degenerate, r.report.structurally_flat_tetrahedra);
+  // 23 jogs; one tetrahedron stays inverted next to the flat ones; the interior angle sums are
+  // undefined at the edges of flat tetrahedra
+  expect_at_most(r.check, Known{1, 47, 0, 61});
 }
 
-TEST(IntegerGridMap, DISABLED_AcuteEdgeHasValenceOne)
+// Known failure: the valence-3 curve of the field runs along the 10-degree edge (its vertices are
+// the vertices of the edge), so the boundary planes of the two faces and the curve's line collapse.
+TEST(IntegerGridMap, AcuteEdgeHasValenceOne)
 {
   const Mesh m = load(example_data + "/n13c_acute_line.vtk");
   const Map_run r = run(m);
@@ -383,9 +421,28 @@ TEST(IntegerGridMap, DISABLED_AcuteEdgeHasValenceOne)
       EXPECT_EQ(r.field.valences[e], 1);
     }
   EXPECT_GE(acute, 8u);
-  std::printf("acute: status %d inverted %zu degenerate %zu jogs %zu/%zu cut %zu int %zu rounds %d stiff %d disagree %zu h %g\n",
-              int(r.report.status), r.check.inverted, r.check.degenerate, r.report.jogs, r.report.degenerate_jogs,
-              r.report.cut_faces, r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
-              r.report.disagreeing_faces, r.report.target_edge_length);
-  expect_valid(r.check);
+  print("n13c_acute_line", r);
+  expect_at_most(r.check, Known{1274, 56, 333, 1898});
+}
+
+// The smaller shared models (the others are reported in the issue): known deviations per model.
+TEST(IntegerGridMap, SmallSharedModels)
+{
+  if(shared_models().empty()) GTEST_SKIP() << "../shared/data not present";
+  const std::map<std::string, Known> known = {
+    {"hexme/s02c_prism", {0, 0, 0, 0}},
+    {"hexme/s01c_cube", {0, 0, 0, 0}},
+    {"mambo/M1", {0, 0, 0, 0}},
+    {"hexme/s10c_cyl_cutsphere", {0, 8, 0, 40}},
+    {"hexme/s04c_tetrahedron", {0, 4, 0, 20}},
+    {"hexme/s06c_dodecahedron", {0, 0, 0, 20}},
+  };
+  for(const auto& [name, k] : known) {
+    SCOPED_TRACE(name);
+    const std::string file = std::string(HEXREM_SHARED_DATA_DIR) + "/" + name + ".vtk";
+    const Mesh m = load(file);
+    const Map_run r = run(m);
+    print(name.c_str(), r);
+    expect_at_most(r.check, k);
+  }
 }

@@ -21,6 +21,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -123,10 +124,17 @@ struct Integer_grid_map_result
   int rounding_rounds = 0;
   /// Largest distance to an integer of a variable when it was rounded.
   double max_rounding = 0;
+  /// Tetrahedra with `det J <= 0` (floating point) in the continuous relaxation, before rounding.
+  std::size_t relaxed_inverted_tetrahedra = 0;
+  /// Tetrahedra with `det J <= 0` (floating point) after rounding, before stiffening.
+  std::size_t rounded_inverted_tetrahedra = 0;
   /// Stiffening rounds run.
   int stiffening_rounds = 0;
-  /// True if the foldover-free untangling ran (it is not available yet: always false).
+  /// True if the foldover-free untangling ran (only when tetrahedra are inverted after stiffening).
   bool untangling_ran = false;
+  /// Tetrahedra that the constraints flatten for every value of the continuous variables (three
+  /// corners on one singular line where the curve jogs); counted when the untangling runs.
+  std::size_t structurally_flat_tetrahedra = 0;
   /// Sign contradictions of the signed union-find (x = -x): a bad cut or inconsistent matchings.
   std::size_t sign_contradictions = 0;
   /// Constraint rows that were inconsistent or could not be resolved over the integers.
@@ -219,7 +227,7 @@ double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const 
 ///     \cgalParamDefault{20}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{untangling}
-///     \cgalParamDescription{run the foldover-free untangling if tetrahedra remain inverted (not available yet: reported as not run)}
+///     \cgalParamDescription{run the foldover-free untangling (Garanzha et al. 2021) of the continuous variables if tetrahedra remain inverted after the stiffening}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
@@ -281,8 +289,7 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   }
   const int max_stiffening = choose_parameter(get_parameter(np, internal_np::maximum_stiffening_iterations), 20);
   const bool untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
-  (void)untangle;
-  r.target_edge_length = h;
+    r.target_edge_length = h;
   const double s = 1.0 / h;
 
   // Diagnostics of the field: non-meshable locations, frames disagreeing with the kept matchings, jogs.
@@ -434,6 +441,8 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   const internal::Quantization_result q = quantizer.quantize(H, rhs, integer_column, solver, y);
   r.rounding_rounds = q.rounds;
   r.max_rounding = q.max_rounding;
+  if(q.relaxed.size() == m) r.relaxed_inverted_tetrahedra = internal::count_non_positive_jacobians(geometry, P * q.relaxed + x0);
+  r.rounded_inverted_tetrahedra = internal::count_non_positive_jacobians(geometry, P * y + x0);
   r.rounding_seconds = seconds_since(t);
   visitor.end_stage("rounding", r.rounding_seconds);
 
@@ -444,9 +453,16 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   r.stiffening_seconds = seconds_since(t);
   visitor.end_stage("stiffening", r.stiffening_seconds);
 
-  // 6. Untangling: the foldover-free optimizer is not available yet.
+  // 6. Foldover-free untangling of the continuous variables, integers fixed.
   visitor.start_stage("untangling");
-  visitor.end_stage("untangling", 0.0);
+  t = Clock::now();
+  if(q.success && untangle && internal::count_non_positive_jacobians(geometry, P * y + x0) > 0) {
+    const internal::Map_untangling_result u = internal::untangle_map(geometry, frames, s, P, x0, integer_column, y);
+    r.untangling_ran = u.ran;
+    r.structurally_flat_tetrahedra = u.structurally_flat;
+  }
+  r.untangling_seconds = seconds_since(t);
+  visitor.end_stage("untangling", r.untangling_seconds);
 
   // 7. Sanitizing and the final map.
   visitor.start_stage("sanitizing");

@@ -37,6 +37,7 @@ public:
     for(;;) {
       ++r.rounds;
       if(!solver.solve(y)) { r.success = false; return r; }
+      if(r.rounds == 1) r.relaxed = y;
       if(pending.empty()) return r;
       std::vector<std::pair<double, Eigen::Index> > by_distance;
       by_distance.reserve(pending.size());

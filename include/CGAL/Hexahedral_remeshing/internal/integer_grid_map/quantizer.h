@@ -24,6 +24,7 @@ struct Quantization_result
   bool success = true;   // false if a factorization failed
   int rounds = 0;        // solves of the rounding loop
   double max_rounding = 0; // largest |y_i - round(y_i)| of a variable when it was rounded
+  Eigen::VectorXd relaxed;  // the solution of the continuous relaxation (first solve)
 };
 
 class Quantizer

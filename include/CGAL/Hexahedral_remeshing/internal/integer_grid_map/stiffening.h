@@ -38,8 +38,8 @@ inline std::size_t count_non_positive_jacobians(const Map_geometry& geometry, co
 
 // MIQ stiffening: while some tetrahedron is inverted, raise the weight of every tetrahedron by its
 // distortion (w_t += min(c dist_t, d_max)) and re-solve the continuous variables with the integers
-// fixed in `solver` (numeric factorization only). Keeps the best y (fewest non-positive Jacobians).
-// Returns the number of rounds run.
+// fixed in `solver` (numeric factorization only). Keeps the best y (fewest non-positive Jacobians);
+// stops after 3 rounds without improvement. Returns the number of rounds run.
 inline int stiffen_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames, double s,
                        const Eigen::SparseMatrix<double, Eigen::RowMajor>& P, const Eigen::VectorXd& x0,
                        Fixed_variable_solver& solver, Eigen::VectorXd& y, int maximum_rounds,
@@ -50,8 +50,8 @@ inline int stiffen_map(const Map_geometry& geometry, const std::vector<Eigen::Ma
   Eigen::VectorXd x = P * y + x0;
   std::size_t best = count_non_positive_jacobians(geometry, x);
   Eigen::VectorXd best_y = y;
-  int rounds = 0;
-  for(; rounds < maximum_rounds && best > 0; ++rounds) {
+  int rounds = 0, since_best = 0;
+  for(; rounds < maximum_rounds && best > 0 && since_best < 3; ++rounds) {
     for(std::size_t t = 0; t < nt; ++t)
       weights[t] += (std::min)(c * map_distortion(map_jacobian(geometry, x, t), s, d_max), d_max);
     Eigen::SparseMatrix<double> H;
@@ -61,7 +61,8 @@ inline int stiffen_map(const Map_geometry& geometry, const std::vector<Eigen::Ma
     if(!solver.solve(y)) break;
     x = P * y + x0;
     const std::size_t n = count_non_positive_jacobians(geometry, x);
-    if(n < best) { best = n; best_y = y; }
+    if(n < best) { best = n; best_y = y; since_best = 0; }
+    else ++since_best;
   }
   y = best_y;
   return rounds;

@@ -1,0 +1,106 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_UNTANGLE_MAP_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_UNTANGLE_MAP_H
+
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
+#include <CGAL/Hexahedral_remeshing/internal/untangling/foldover_free_map.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+struct Map_untangling_result
+{
+  bool ran = false;
+  std::size_t structurally_flat = 0; // tetrahedra flat for every value of the free variables
+  std::size_t inverted_before = 0, inverted_after = 0;
+};
+
+// Foldover-free untangling of the continuous variables with the integer ones fixed (algorithms.md §4
+// "Validity and repair" (2), Garanzha et al. 2021): K_t = J_t E_t / s, ideal K = I, weight vol_t.
+// Seamlessness and the integer constraints are untouched since only the free continuous y move.
+// Tetrahedra that the constraints flatten whatever y is (three corners on one singular line after a
+// jog of the curve) cannot be repaired and would stall the barrier: they are found by evaluating the
+// map at random y and left out. The result is kept only if it has fewer inverted tetrahedra.
+inline Map_untangling_result untangle_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames,
+                                          double s, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
+                                          const Eigen::VectorXd& x0, const std::vector<char>& integer,
+                                          Eigen::VectorXd& y)
+{
+  typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
+  Map_untangling_result r;
+  const std::size_t nt = geometry.volumes.size();
+  // continuous columns
+  std::vector<Eigen::Index> free_columns;
+  std::vector<Eigen::Index> column_of(std::size_t(P.cols()), -1);
+  Eigen::VectorXd y_int = Eigen::VectorXd::Zero(P.cols());
+  for(Eigen::Index j = 0; j < P.cols(); ++j) {
+    if(integer[std::size_t(j)]) y_int[j] = y[j];
+    else { column_of[std::size_t(j)] = Eigen::Index(free_columns.size()); free_columns.push_back(j); }
+  }
+  if(free_columns.empty()) return r;
+  // structurally flat tetrahedra: det J = 0 at a random point of the affine space
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd y_random(P.cols());
+  for(Eigen::Index j = 0; j < P.cols(); ++j) y_random[j] = uniform(rng);
+  const Eigen::VectorXd x_random = P * y_random + x0;
+  std::vector<std::size_t> elements;
+  for(std::size_t t = 0; t < nt; ++t) {
+    Eigen::Matrix<double, 3, 4> U;
+    for(int c = 0; c < 4; ++c) U.col(c) = x_random.segment<3>(Eigen::Index(12 * t + 3 * c));
+    const double scale = (U.col(1) - U.col(0)).norm() * (U.col(2) - U.col(0)).norm() * (U.col(3) - U.col(0)).norm();
+    if(std::abs((U * geometry.gradients[t].transpose()).determinant()) * geometry.volumes[t] * 6 <= 1e-12 * scale) ++r.structurally_flat;
+    else elements.push_back(t);
+  }
+  Foldover_free_problem problem;
+  const Eigen::Index E = Eigen::Index(elements.size());
+  problem.x0.resize(12 * E);
+  problem.M.resize(elements.size());
+  problem.w.resize(elements.size());
+  const Eigen::VectorXd x_fixed = P * y_int + x0;
+  std::vector<Eigen::Triplet<double> > triplets;
+  Eigen::Matrix<double, 3, 4> S;
+  S << -1, 1, 0, 0, -1, 0, 1, 0, -1, 0, 0, 1;
+  for(Eigen::Index e = 0; e < E; ++e) {
+    const std::size_t t = elements[std::size_t(e)];
+    problem.x0.segment<12>(12 * e) = x_fixed.segment<12>(Eigen::Index(12 * t));
+    for(Eigen::Index i = 0; i < 12; ++i)
+      for(Row_matrix::InnerIterator it(P, Eigen::Index(12 * t) + i); it; ++it)
+        if(column_of[std::size_t(it.col())] >= 0) triplets.emplace_back(int(12 * e + i), int(column_of[std::size_t(it.col())]), it.value());
+    // G = B^{-1} S, so B^{-1} = columns 1..3 of G; M = B^{-T} E / s
+    const Eigen::Matrix3d B_inverse = geometry.gradients[t].rightCols<3>();
+    problem.M[std::size_t(e)] = B_inverse.transpose() * frames[t] / s;
+    problem.w[std::size_t(e)] = geometry.volumes[t];
+  }
+  problem.P.resize(12 * E, Eigen::Index(free_columns.size()));
+  problem.P.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::VectorXd z(Eigen::Index(free_columns.size()));
+  for(std::size_t k = 0; k < free_columns.size(); ++k) z[Eigen::Index(k)] = y[free_columns[k]];
+  Foldover_free_options options;
+  options.stop_when_untangled = true;
+  options.max_outer_iterations = 50;
+  options.max_inner_iterations = 300;
+  const Foldover_free_result f = minimize_foldover_free(problem, z, options);
+  r.ran = true;
+  r.inverted_before = f.inverted_before;
+  r.inverted_after = f.inverted_after;
+  if(f.inverted_after < f.inverted_before)
+    for(std::size_t k = 0; k < free_columns.size(); ++k) y[free_columns[k]] = z[Eigen::Index(k)];
+  return r;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_UNTANGLE_MAP_H
