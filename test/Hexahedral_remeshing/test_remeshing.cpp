@@ -11,8 +11,14 @@
 
 #include <gtest/gtest.h>
 
+#include "hex_mesh_generators.h"
+#include "synthetic_models.h"
+
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -79,6 +85,18 @@ Cell_check check_cells(const HR::Hexahedral_mesh_3& h)
     if(opposite) ++c.interior_quads; else ++c.bad_quads;
   }
   return c;
+}
+
+Mesh from_off(const std::string& name, const std::string& text, double max_volume)
+{
+  const std::string off = (std::filesystem::temp_directory_path() / (name + ".off")).string();
+  {
+    std::ofstream out(off);
+    out << text;
+  }
+  Mesh m = load(off, max_volume);
+  std::remove(off.c_str());
+  return m;
 }
 
 struct Counting_visitor : HR::Hexahedral_remeshing_visitor
@@ -159,4 +177,90 @@ TEST(HexahedralRemeshing, BadParameters)
   EXPECT_THROW(CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(-1.0)), HR::Input_error);
   EXPECT_THROW(CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(std::numeric_limits<double>::quiet_NaN())),
                HR::Input_error);
+}
+
+TEST(HexahedralRemeshing, LPrismConcaveEdgeGetsThreeHexahedra)
+{
+  const Mesh m = from_off("hexrem_remesh_l_prism", l_prism_off(), 0.005);
+  HR::Hexahedral_mesh_3 hexes;
+  const HR::Hexahedral_remeshing_result r = CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(0.25));
+  EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  ASSERT_EQ(hexes.number_of_hexahedra(), 3u * 4 * 4 * 4);
+  EXPECT_EQ(hexes.number_of_vertices(), std::size_t(3 * 5 * 5 * 5 - 2 * 5 * 5));
+  const Cell_check c = check_cells(hexes);
+  EXPECT_EQ(c.non_positive_corners, 0u);
+  EXPECT_EQ(c.bad_quads, 0u);
+  EXPECT_NEAR(c.volume, 3.0, 1e-6);
+  // hex edges counted from the output: the concave vertical edge (x = y = 1) has 3 hexahedra around it,
+  // the 17 other feature edges 1
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_hexes;
+  static const int E[12][2] = { {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7} };
+  for(const auto& h : hexes.hexahedra)
+    for(const auto& e : E) ++edge_hexes[std::minmax(h[e[0]], h[e[1]])];
+  std::size_t concave = 0;
+  for(const auto& kv : edge_hexes) {
+    const auto& a = hexes.points[kv.first.first];
+    const auto& b = hexes.points[kv.first.second];
+    if(std::abs(a.x() - 1) < 1e-6 && std::abs(a.y() - 1) < 1e-6 && std::abs(b.x() - 1) < 1e-6 && std::abs(b.y() - 1) < 1e-6) {
+      EXPECT_EQ(kv.second, 3);
+      ++concave;
+    }
+  }
+  EXPECT_EQ(concave, 4u);
+  EXPECT_EQ(r.hex_feature_edges, std::size_t(2 * 32 + 6 * 4)); // 2 L outlines of length 8, 6 vertical edges of length 1
+  EXPECT_EQ(r.hex_feature_edges_with_prescribed_valence, r.hex_feature_edges);
+}
+
+// The integer-grid map of a field whose singular curve is known exactly: frames taken from the charts
+// of a hex mesh with one valence-3 (or 5) axis, split into 24 tetrahedra per hexahedron. The map, then
+// the extraction, must give back a valid hex mesh with the irregular axis (independent of the frame field).
+TEST(HexahedralRemeshing, MapOfExactFramesAroundASingularAxis)
+{
+  namespace T = CGAL::Hexahedral_remeshing::test;
+  for(int n : {3, 5}) {
+    SCOPED_TRACE(n);
+    const T::Generated_hex_mesh g = T::make_polygon_prism(n, 2);
+    const HR::Integer_grid_map source = T::map_from_hex_mesh(g.mesh, 1, 7u + unsigned(n));
+    HR::Tetrahedral_soup_3<Mesh::Point_3> soup;
+    soup.points = source.points;
+    for(const auto& t : source.tetrahedra) soup.tetrahedra.push_back({t[0], t[1], t[2], t[3]});
+    Mesh mesh;
+    HR::build_tetrahedral_mesh(soup, mesh, HR::parameters::split_multi_boundary_tetrahedra(false));
+    ASSERT_EQ(mesh.number_of_tetrahedra(), source.number_of_tetrahedra());
+    // frame of a tetrahedron: the rotation closest to the transposed Jacobian of its chart
+    std::vector<Eigen::Matrix3d> frames(mesh.number_of_tetrahedra());
+    for(std::size_t t = 0; t < frames.size(); ++t) {
+      const std::size_t i = mesh.tetrahedron_input_index(Mesh::Index(t));
+      Eigen::Matrix3d U, D;
+      for(int k = 1; k < 4; ++k) {
+        const auto& p = source.points[source.tetrahedra[i][k]];
+        const auto& p0 = source.points[source.tetrahedra[i][0]];
+        D.col(k - 1) = Eigen::Vector3d(p.x() - p0.x(), p.y() - p0.y(), p.z() - p0.z());
+        U.col(k - 1) = source.parameters[i][k] - source.parameters[i][0];
+      }
+      const Eigen::Matrix3d J = U * D.inverse();
+      Eigen::JacobiSVD<Eigen::Matrix3d> svd(J.transpose(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+      frames[t] = svd.matrixU() * svd.matrixV().transpose();
+      ASSERT_GT(frames[t].determinant(), 0);
+    }
+    const HR::Matchings matchings = HR::compute_matchings(mesh, frames);
+    const HR::Singularity_graph singularities = HR::compute_singularity_graph(mesh, frames, matchings);
+    ASSERT_EQ(singularities.number_of_curves(n == 3 ? 3 : 5), 1u);
+    HR::Integer_grid_map map;
+    const HR::Integer_grid_map_result r = HR::compute_integer_grid_map(mesh, frames, matchings, singularities, map,
+                                                                       HR::parameters::target_edge_length(0.5));
+    const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
+    EXPECT_EQ(check.inverted_tetrahedra, 0u);
+    EXPECT_TRUE(check.is_integer_grid());
+    EXPECT_EQ(check.interior_edge_valences.count(n == 3 ? 3 : 5), 1u);
+    HR::Hexahedral_mesh_3 hexes;
+    HR::extract_hexahedra(map, hexes);
+    const Cell_check c = check_cells(hexes);
+    EXPECT_GT(hexes.number_of_hexahedra(), 0u);
+    EXPECT_EQ(c.non_positive_corners, 0u);
+    EXPECT_EQ(c.bad_quads, 0u);
+    const HR::Hexahedral_mesh_check hc = HR::check_hexahedral_mesh(hexes);
+    EXPECT_EQ(hc.irregular_interior_edges.count(n), 1u);
+    EXPECT_EQ(r.status, HR::Integer_grid_map_status::OK);
+  }
 }

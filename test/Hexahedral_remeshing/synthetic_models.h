@@ -1,0 +1,50 @@
+// Closed surfaces of the synthetic test models (OFF text), tetrahedralized by the tests with TetGen:
+// a box, the L-prism (three unit cubes, one concave vertical edge), the 30-60-90 triangular prism.
+#ifndef HEXREM_TEST_SYNTHETIC_MODELS_H
+#define HEXREM_TEST_SYNTHETIC_MODELS_H
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+// The box [0,a] x [0,b] x [0,c].
+inline std::string box_off(double a, double b, double c)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "OFF\n8 12 0\n0 0 0\n" << a << " 0 0\n" << a << " " << b << " 0\n0 " << b << " 0\n"
+     << "0 0 " << c << "\n" << a << " 0 " << c << "\n" << a << " " << b << " " << c << "\n0 " << b << " " << c << "\n"
+     << "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+  return os.str();
+}
+
+// The L of the unit squares (0,0), (1,0), (0,1) extruded from z = 0 to z = 1.
+inline std::string l_prism_off()
+{
+  const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  std::ostringstream os;
+  os << "OFF\n12 20 0\n";
+  for(int z = 0; z < 2; ++z)
+    for(const auto& p : P) os << p[0] << " " << p[1] << " " << z << "\n";
+  // bottom (outward -z) and top, as fans of the L split into convex pieces: (0,1,2,3),(0,3,4,5)
+  os << "3 0 2 1\n3 0 3 2\n3 0 4 3\n3 0 5 4\n";
+  os << "3 6 7 8\n3 6 8 9\n3 6 9 10\n3 6 10 11\n";
+  for(int i = 0; i < 6; ++i) {
+    const int j = (i + 1) % 6;
+    os << "3 " << i << " " << j << " " << j + 6 << "\n3 " << i << " " << j + 6 << " " << i + 6 << "\n";
+  }
+  return os.str();
+}
+
+// The triangle (0,0), (1,0), (0,1/sqrt(3)) (angles 90, 30, 60 degrees) extruded from z = 0 to z = 1.
+inline std::string prism_30_60_90_off()
+{
+  const double c = 1.0 / std::sqrt(3.0);
+  std::ostringstream os;
+  os.precision(17);
+  os << "OFF\n6 8 0\n0 0 0\n1 0 0\n0 " << c << " 0\n0 0 1\n1 0 1\n0 " << c << " 1\n"
+     << "3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n";
+  return os.str();
+}
+
+#endif // HEXREM_TEST_SYNTHETIC_MODELS_H
