@@ -432,6 +432,14 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
       // local untangling: the sweeps only accept moves that lower no star's minimum scaled Jacobian
       // nor add a non-positive hexahedron; a few sweeps repair isolated foldovers
       internal::Local_hex_smoother smoother(work, constraints, projector, size, local_options);
+      // start from the vertices of the hexahedra with SJ <= 0 and their neighbours: the sweeps then
+      // spread only as far as vertices move
+      std::fill(active.begin(), active.end(), char(0));
+      for(std::size_t h = 0; h < work.number_of_hexahedra(); ++h)
+        if(smoother.scaled_jacobians()[h] <= 0)
+          for(std::uint32_t v : work.hexahedra[h])
+            for(std::uint32_t k = smoother.stars().offset[v]; k < smoother.stars().offset[v + 1]; ++k)
+              for(std::uint32_t w : work.hexahedra[smoother.stars().hex[k]]) active[w] = 1;
       for(int s = 0; s < 20; ++s) {
         ++report.untangling_sweeps;
         const std::size_t moves = smoother.sweep(active);
@@ -447,6 +455,10 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
       // (boundary fixed), stopped as soon as nothing is inverted
       internal::Foldover_free_options untangling;
       untangling.stop_when_untangled = true;
+      // capped: with the boundary fixed some foldovers cannot be repaired, and the minimization
+      // would otherwise run its full schedule for nothing
+      untangling.max_outer_iterations = 10;
+      untangling.max_inner_iterations = 200;
       minimize(true, untangling);
       current = internal::hex_mesh_quality(work, constraints, projector);
       report.global_untangling_run = true;

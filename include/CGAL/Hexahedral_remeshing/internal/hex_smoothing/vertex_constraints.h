@@ -36,7 +36,8 @@ struct Hex_vertex_constraint
 };
 
 // Which vertex lies on what. With `mesh.vertex_tags` (full size): CORNER -> FIXED, FEATURE_CURVE ->
-// CURVE on the nearest polyline, BOUNDARY -> SURFACE. Without: the vertices of the boundary quads,
+// CURVE on the nearest polyline, BOUNDARY -> SURFACE (or CURVE / FIXED if it lies on a polyline /
+// corner, by distance as below), untagged -> INTERIOR even on a boundary quad (hole of a partial mesh). Without: the vertices of the boundary quads,
 // then by distance, below 1e-3 of their shortest hex edge: to a reference corner -> FIXED, to a
 // polyline -> CURVE, else SURFACE. Then `keep`: 1 also fixes the CURVE vertices, 2 every boundary
 // vertex; `user_fixed[v]` fixes v. A constraint that the reference cannot honour (no surface, no
@@ -63,8 +64,10 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
     bool corner = false, curve = false;
     if(tagged) {
       const std::uint8_t t = mesh.vertex_tags[v];
-      cv.on_boundary = cv.on_boundary || (t & Hexahedral_mesh_3::BOUNDARY) != 0 || (t & Hexahedral_mesh_3::FEATURE_CURVE) != 0 ||
-                       (t & Hexahedral_mesh_3::CORNER) != 0;
+      // the tags say what lies on the input boundary: a boundary quad with untagged vertices bounds a
+      // hole of a partial mesh (cells the extraction left out), which must not be pulled onto the
+      // surface; its vertices move freely
+      cv.on_boundary = (t & (Hexahedral_mesh_3::BOUNDARY | Hexahedral_mesh_3::FEATURE_CURVE | Hexahedral_mesh_3::CORNER)) != 0;
       corner = (t & Hexahedral_mesh_3::CORNER) != 0;
       curve = (t & Hexahedral_mesh_3::FEATURE_CURVE) != 0;
     }
