@@ -171,6 +171,23 @@ TEST(Surfaces, SoupsWithDuplicatedVerticesAreRepaired)
   }
 }
 
+TEST(Surfaces, OffQuadsColoursAndBadIndices)
+{
+  const std::string quads = temp_dir() + "quads.off";
+  std::ofstream(quads) << "OFF # a cube of quads, with a colour per face\n8 6 0\n"
+                          "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+                          "4 0 2 3 1 255 0 0\n4 4 5 7 6 255 0 0\n4 0 1 5 4 255 0 0\n"
+                          "4 2 6 7 3 255 0 0\n4 0 4 6 2 255 0 0\n4 1 3 7 5 255 0 0\n";
+  EXPECT_NEAR(volume(read(quads)), 1.0, 1e-12);
+  const std::string negative = temp_dir() + "negative.off";
+  std::ofstream(negative) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 -1 3\n3 0 2 3\n3 1 2 3\n";
+  const std::string what = error_of(negative);
+  EXPECT_TRUE(contains(what, "negative.off:8: face 1: vertex index -1 out of range")) << what;
+  const std::string huge = temp_dir() + "huge.off";
+  std::ofstream(huge) << "OFF\n4000000000 4 0\n0 0 0\n";
+  EXPECT_TRUE(contains(error_of(huge), "more vertices than the file can hold")) << error_of(huge);
+}
+
 TEST(Surfaces, FlawedSurfacesGiveClearErrors)
 {
   struct Case { const char* file; const char* problem; };
@@ -436,6 +453,28 @@ TEST(Gmsh, CadErrors)
   });
   const std::string what = error_of(sheet);
   EXPECT_TRUE(contains(what, "the CAD file has no solid")) << what;
+  // assemblies: solids that touch or overlap are refused (meshed one by one they would overlap or
+  // touch without sharing nodes); solids apart are separate bodies
+  const std::string touching = temp_dir() + "touching.step", overlapping = temp_dir() + "overlapping.step",
+                    apart = temp_dir() + "apart.step";
+  with_gmsh([&] {
+    const double second[3][3] = {{1, 0.5, 0}, {0.5, 0.5, 0.5}, {3, 0, 0}};
+    const std::string files[3] = {touching, overlapping, apart};
+    for(int k = 0; k < 3; ++k) {
+      gmsh::model::add("assembly " + std::to_string(k));
+      gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+      gmsh::model::occ::addBox(second[k][0], second[k][1], second[k][2], 1, 1, 1);
+      gmsh::model::occ::synchronize();
+      gmsh::write(files[k]);
+    }
+  });
+  for(const std::string& f : {touching, overlapping}) {
+    const std::string e = error_of(f, HR::parameters::mesh_size(0.5));
+    EXPECT_TRUE(contains(e, "the part has 2 solids that touch or overlap")) << e;
+  }
+  const Mesh two = read(apart, HR::parameters::mesh_size(0.5));
+  EXPECT_EQ(two.number_of_components(), 2u);
+  EXPECT_NEAR(volume(two), 2.0, 1e-9);
 }
 
 TEST(Gmsh, SilentAndSafeTwiceAndWithGmshInitializedByTheCaller)

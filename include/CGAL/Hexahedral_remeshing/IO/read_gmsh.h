@@ -252,7 +252,8 @@ void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Input_error naming the file and the problem: unreadable file (gmsh's message), a part
-///         without any solid (only surfaces or curves), a meshing failure, a non-positive
+///         without any solid (only surfaces or curves), solids that touch or overlap (an
+///         assembly: each body must be one solid), a meshing failure, a non-positive
 ///         `mesh_size`.
 template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
@@ -273,6 +274,29 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
     if(volumes.empty())
       throw Input_error(filename, 0, "the CAD file has no solid (" + std::to_string(surfaces.size()) +
                         " surfaces, no volume): export the part as a solid (closed shells sewn into a volume) and retry");
+    if(volumes.size() > 1) {
+      // Solids meshed one by one would overlap or touch without sharing nodes: the boolean
+      // fragments of the solids tell whether they intersect (more pieces, or a shared face).
+      std::vector<std::pair<int, int> > pieces, tools(volumes.begin() + 1, volumes.end());
+      std::vector<std::vector<std::pair<int, int> > > map;
+      internal_gmsh::call(filename, "intersect the solids of the part", [&] {
+        gmsh::model::occ::fragment({volumes.front()}, tools, pieces, map);
+        gmsh::model::occ::synchronize();
+      });
+      std::vector<std::pair<int, int> > after, faces;
+      gmsh::model::getEntities(after, 3);
+      gmsh::model::getEntities(faces, 2);
+      std::size_t shared = 0;
+      for(const auto& f : faces) {
+        std::vector<int> up, down;
+        gmsh::model::getAdjacencies(2, f.second, up, down);
+        shared += up.size() > 1;
+      }
+      if(after.size() != volumes.size() || shared > 0)
+        throw Input_error(filename, 0, "the part has " + std::to_string(volumes.size()) + " solids that touch or "
+                          "overlap (" + std::to_string(shared) + " shared faces after intersecting them); each body "
+                          "must be one solid: fuse them in the CAD tool (boolean union) or separate them, and retry");
+    }
     double xmin = 0, ymin = 0, zmin = 0, xmax = 0, ymax = 0, zmax = 0;
     gmsh::model::getBoundingBox(-1, -1, xmin, ymin, zmin, xmax, ymax, zmax);
     const double diagonal = std::sqrt((xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin) +
