@@ -205,6 +205,13 @@ TEST(Surfaces, FlawedSurfacesGiveClearErrors)
   }
 }
 
+TEST(Surfaces, TetGenBoundsThatWouldNotTerminateAreRefused)
+{
+  const std::string what = error_of(inputs + "cavity.off", HR::parameters::radius_edge_ratio(0.5));
+  EXPECT_TRUE(contains(what, "radius-edge ratio must be 0 (no refinement) or at least 1")) << what;
+  EXPECT_NEAR(volume(read(inputs + "cavity.off", HR::parameters::radius_edge_ratio(0))), 26.0, 1e-9);
+}
+
 TEST(Surfaces, CrashOfAnIsolatedLibraryIsAnInputError)
 {
   // what protects the process when TetGen or gmsh crash on an input the checks let through

@@ -173,6 +173,13 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
   const double ratio = choose_parameter(get_parameter(np, internal_np::radius_edge_ratio), 2.0);
   const bool preserve = choose_parameter(get_parameter(np, internal_np::preserve_surface_triangles), false);
 
+  // TetGen does not terminate with a radius-edge bound below 1, and reads a non-positive volume
+  // bound as none: refused rather than run forever in the child process
+  if(!(ratio == 0 || ratio >= 1) || !std::isfinite(ratio))
+    throw Input_error(source, 0, "the radius-edge ratio must be 0 (no refinement) or at least 1, got " +
+                      std::to_string(ratio));
+  if(!(max_volume >= 0) || !std::isfinite(max_volume))
+    throw Input_error(source, 0, "the maximum tetrahedron volume must be positive, got " + std::to_string(max_volume));
   const bool nested = internal::check_and_orient_surface(sm, source);
 
   std::vector<double> coords;
@@ -316,7 +323,8 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
 /// \cgalNamedParamsEnd
 /// \throws Input_error naming `soup.source`, the problem, an example location and what to do, if the
 ///         surface is empty, not closed, not manifold, has zero-area triangles, intersects itself
-///         (or two shells touch), or if TetGen fails or crashes.
+///         (or two shells touch), if TetGen fails or crashes, or for a radius-edge ratio in (0, 1)
+///         (TetGen would not terminate) or a negative volume bound.
 template <class FaceListGraph, class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void tetrahedralize_surface(const FaceListGraph& surface, Tetrahedral_soup_3<Point>& soup,
                             const NamedParameters& np = CGAL::parameters::default_values())
