@@ -87,7 +87,9 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 /// \param np an optional sequence of named parameters: those of `compute_frame_field_pipeline()`
 ///        (`valence_heuristic`, `prescribed_edge_valences`, `baseline`, `face_weights`, ...), of
 ///        `compute_integer_grid_map()` (`maximum_stiffening_iterations`, `untangling`), of
-///        `tetrahedralize_surface()` for a surface input, and:
+///        `smooth_hexahedral_mesh()` (`number_of_iterations`, `smoothing_boundary`,
+///        `smoothing_sharp_angle`, with its defaults), of `tetrahedralize_surface()` for a surface
+///        input, and:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{target_edge_length}
 ///     \cgalParamDescription{hex edge length in model units}

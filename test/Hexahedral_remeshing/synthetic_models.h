@@ -3,9 +3,40 @@
 #ifndef HEXREM_TEST_SYNTHETIC_MODELS_H
 #define HEXREM_TEST_SYNTHETIC_MODELS_H
 
+#include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
+
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
+
+// The tetrahedral mesh of a file (boundary chords split, TetGen bound on the tet volume for surfaces).
+template <class Mesh>
+Mesh load_tetrahedral_mesh(const std::string& file, double max_volume = 0)
+{
+  Mesh m;
+  CGAL::Hexahedral_remeshing::IO::read_tetrahedral_mesh(
+    file, m, CGAL::Hexahedral_remeshing::parameters::split_boundary_chords(
+               true, CGAL::Hexahedral_remeshing::parameters::maximum_tetrahedron_volume(max_volume)));
+  return m;
+}
+
+// The tetrahedral mesh of an OFF text, written to a temporary file `name`.off.
+template <class Mesh>
+Mesh tetrahedral_mesh_of_off(const std::string& name, const std::string& text, double max_volume)
+{
+  const std::string off = (std::filesystem::temp_directory_path() / (name + ".off")).string();
+  {
+    std::ofstream out(off);
+    out.precision(17);
+    out << text;
+  }
+  Mesh m = load_tetrahedral_mesh<Mesh>(off, max_volume);
+  std::remove(off.c_str());
+  return m;
+}
 
 // The box [0,a] x [0,b] x [0,c].
 inline std::string box_off(double a, double b, double c)

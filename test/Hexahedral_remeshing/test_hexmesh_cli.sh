@@ -165,9 +165,9 @@ expect_error 2 "takes no --heuristic nor --valences" frames "$n13c" --baseline -
 expect_error 2 "option --threads expects an integer" frames "$n13c" --threads 0
 expect_error 5 "no/such/dir/r.json: cannot open file for writing" frames "$n13c" --frames "$tmp/e/f.vtk" --json "$tmp/no/such/dir/r.json"
 [ -z "$(ls -A "$tmp/e")" ] || fail "failed frames runs left files behind: $(ls "$tmp/e")"
-# an output that fails after the computation (a directory in the way): the outputs already written are removed
+# an output path that is a directory is refused before any computation
 mkdir "$tmp/e/cc.perm"
-expect_error 5 "cc.perm: cannot rename" frames "$n13c" --no-realign --quiet "${outputs[@]}"
+expect_error 5 "cc.perm: is a directory" frames "$n13c" --no-realign --quiet "${outputs[@]}"
 [ "$(ls -A "$tmp/e")" = "cc.perm" ] || fail "a failed output left a partial set of outputs: $(ls "$tmp/e")"
 
 # a part without acute edges: the summary says so instead of leaving the count empty
@@ -206,7 +206,8 @@ grep -q "POINT_DATA" "$tmp/cube_map.vtk" && grep -q "uvw" "$tmp/cube_map.vtk" ||
 "$hexmesh" extract "$tmp/cube.hexex" --out "$tmp/cube_hex.mesh" > "$tmp/out" 2>&1 || fail "extract of the parametrized cube: $(cat "$tmp/out")"
 grep -q "hex mesh            64 hexahedra, 125 vertices, valid" "$tmp/out" || fail "parametrize + extract cube: $(cat "$tmp/out")"
 "$hexmesh" remesh "$data/cube.off" --max-volume 0.002 --hexahedra 27 --out "$tmp/cube_remesh.vtk" --json "$tmp/remesh.json" \
-  > "$tmp/out" 2> "$tmp/err" || fail "remesh exit code $?: $(cat "$tmp/err")"
+  --valences-out "$tmp/cube_valences.txt" > "$tmp/out" 2> "$tmp/err" || fail "remesh exit code $?: $(cat "$tmp/err")"
+[ "$(grep -vc '^#' "$tmp/cube_valences.txt")" -gt 0 ] || fail "remesh --valences-out wrote no valence"
 grep -q "tetrahedra -> 27 hexahedra (OK)" "$tmp/out" || fail "remesh summary: $(cat "$tmp/out")"
 grep -q "36/36 hex edges on sharp edges with the prescribed valence; 100.0% of the sharp-edge length" "$tmp/out" \
   || fail "remesh feature line: $(grep features "$tmp/out")"
@@ -251,6 +252,55 @@ grep -q '"components": 1' "$tmp/merged.json" || fail "merged crack: $(cat "$tmp/
 grep -q '"components": 2' "$tmp/kept.json" || fail "kept crack: $(cat "$tmp/kept.json")"
 expect_error 2 "expects refuse, merge or keep" info "$inputs/cracked_interface.vtk" --coincident-vertices glue
 expect_error 2 "expects a positive length" info "$inputs/box_with_cavity.step" --mesh-size 0
+
+# smooth (issue 12): a 2x2x2 grid of the unit cube, untagged, its centre vertex pushed towards a corner
+# (inverted hexahedra), smoothed against cube.off (sharp edges found by dihedral angle): untangled, the
+# centre back near (0.5, 0.5, 0.5), corners unmoved; errors and all-or-nothing outputs
+{
+  printf 'MeshVersionFormatted 2\nDimension 3\nVertices\n27\n'
+  for k in 0 1 2; do for j in 0 1 2; do for i in 0 1 2; do
+    if [ "$i$j$k" = 111 ]; then echo "0.95 0.95 0.95 0"; else echo "$(awk "BEGIN{print $i/2, $j/2, $k/2}") 0"; fi
+  done; done; done
+  printf 'Hexahedra\n8\n'
+  for k in 0 1; do for j in 0 1; do for i in 0 1; do
+    v() { echo $(( ($3 * 3 + $2) * 3 + $1 + 1 )); }
+    echo "$(v $i $j $k) $(v $((i+1)) $j $k) $(v $((i+1)) $((j+1)) $k) $(v $i $((j+1)) $k)" \
+         "$(v $i $j $((k+1))) $(v $((i+1)) $j $((k+1))) $(v $((i+1)) $((j+1)) $((k+1))) $(v $i $((j+1)) $((k+1))) 0"
+  done; done; done
+  printf 'End\n'
+} > "$tmp/tangled.mesh"
+"$hexmesh" smooth "$tmp/tangled.mesh" --reference "$data/cube.off" --out "$tmp/smoothed.mesh" --json "$tmp/smooth.json" \
+  > "$tmp/out" 2> "$tmp/err" || fail "smooth exit code: $(cat "$tmp/err")"
+grep -q "8 hexahedra, 27 vertices (1 interior, 6 on the surface, 12 on feature curves, 8 fixed)" "$tmp/out" \
+  || fail "smooth summary (vertex classes): $(cat "$tmp/out")"
+python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['before']['non_positive'] >= 1, r['before']
+assert r['after']['non_positive'] == 0 and r['after']['min_scaled_jacobian'] > 0.9, r['after']
+assert r['after']['min_scaled_jacobian'] >= r['before']['min_scaled_jacobian']
+assert r['smoothing']['untangling'] and r['smoothing']['detected_feature_polylines'] == 12, r['smoothing']
+assert r['after']['hausdorff_distance'] < 1e-9 and r['hex_mesh']['valid'], r
+for k in ('input', 'reference', 'output', 'smoothing', 'before', 'after', 'hex_mesh', 'seconds'): assert k in r, k
+" "$tmp/smooth.json" || fail "smooth JSON: $(cat "$tmp/smooth.json")"
+awk '/^[ \t]*Vertices/ {f=1; next} f==1 {f=2; next} f==2 && NR > 0 {n++; if (n == 14) {print; exit}}' "$tmp/smoothed.mesh" > "$tmp/centre"
+python3 -c "
+import sys
+x, y, z = map(float, open(sys.argv[1]).read().split()[:3])
+assert max(abs(x - 0.5), abs(y - 0.5), abs(z - 0.5)) < 0.1, (x, y, z)
+" "$tmp/centre" || fail "smooth: centre vertex not back near the middle: $(cat "$tmp/centre")"
+[ "$(awk 'f && NF {print $1; exit} /^[ \t]*Hexahedra[ \t]*$/ {f=1}' "$tmp/smoothed.mesh")" = "8" ] || fail "smooth MEDIT output lacks 8 Hexahedra"
+grep -q "^0 0 0 \|^0 0 0$" "$tmp/smoothed.mesh" || fail "smooth: corner (0, 0, 0) moved"
+"$hexmesh" smooth "$tmp/smoothed.mesh" --reference "$data/cube.off" --out "$tmp/again.vtk" --iterations 0 --quiet > "$tmp/out" 2>&1 \
+  || fail "smooth --iterations 0 --quiet exit code: $(cat "$tmp/out")"
+[ ! -s "$tmp/out" ] && grep -q "^CELL_TYPES 8" "$tmp/again.vtk" || fail "smooth --quiet / VTK output"
+expect_error 2 "needs --reference" smooth "$tmp/tangled.mesh" --out "$tmp/x/a.mesh"
+expect_error 2 "written as .mesh" smooth "$tmp/tangled.mesh" --reference "$data/cube.off" --out "$tmp/x/a.obj"
+expect_error 2 "expects an integer" smooth "$tmp/tangled.mesh" --reference "$data/cube.off" --out "$tmp/x/a.mesh" --iterations -1
+expect_error 3 "does_not_exist.off" smooth "$tmp/tangled.mesh" --reference "$tmp/does_not_exist.off" --out "$tmp/x/a.mesh" --json "$tmp/x/a.json"
+expect_error 3 "does_not_exist.mesh" smooth "$tmp/does_not_exist.mesh" --reference "$data/cube.off" --out "$tmp/x/a.mesh"
+expect_error 5 "cannot open file for writing" smooth "$tmp/tangled.mesh" --reference "$data/cube.off" --out "$tmp/x/a.mesh" --json "$tmp/no_dir/a.json"
+[ -z "$(ls -A "$tmp/x")" ] || fail "failed smooth runs left files behind: $(ls "$tmp/x")"
 
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "shared_models.h"
+#include "synthetic_models.h"
 
 #include <chrono>
 #include <cmath>
@@ -32,64 +33,11 @@ namespace {
 
 const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
 
-Mesh load(const std::string& file, double max_volume = 0)
-{
-  Mesh m;
-  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::split_boundary_chords(true,
-                                           HR::parameters::maximum_tetrahedron_volume(max_volume)));
-  return m;
-}
+Mesh load(const std::string& file, double max_volume = 0) { return load_tetrahedral_mesh<Mesh>(file, max_volume); }
 
 Mesh from_off(const std::string& name, const std::string& text, double max_volume)
 {
-  const std::string off = (fs::temp_directory_path() / (name + ".off")).string();
-  {
-    std::ofstream out(off);
-    out.precision(17);
-    out << text;
-  }
-  Mesh m = load(off, max_volume);
-  std::remove(off.c_str());
-  return m;
-}
-
-// Box [0,a]x[0,b]x[0,c] as an OFF surface.
-std::string box_off(double a, double b, double c)
-{
-  std::ostringstream os;
-  os.precision(17);
-  os << "OFF\n8 12 0\n0 0 0\n" << a << " 0 0\n" << a << " " << b << " 0\n0 " << b << " 0\n"
-     << "0 0 " << c << "\n" << a << " 0 " << c << "\n" << a << " " << b << " " << c << "\n0 " << b << " " << c << "\n"
-     << "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
-  return os.str();
-}
-
-// L-shaped prism: the L (0,0),(2,0),(2,1),(1,1),(1,2),(0,2) extruded over z in [0,1].
-std::string l_prism_off()
-{
-  const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-  std::ostringstream os;
-  os << "OFF\n12 20 0\n";
-  for(int z = 0; z < 2; ++z)
-    for(const auto& p : P) os << p[0] << " " << p[1] << " " << z << "\n";
-  // bottom (outward -z) and top, as fans of the L split into convex pieces: (0,1,2,3),(0,3,4,5)
-  os << "3 0 2 1\n3 0 3 2\n3 0 4 3\n3 0 5 4\n";
-  os << "3 6 7 8\n3 6 8 9\n3 6 9 10\n3 6 10 11\n";
-  for(int i = 0; i < 6; ++i) {
-    const int j = (i + 1) % 6;
-    os << "3 " << i << " " << j << " " << j + 6 << "\n3 " << i << " " << j + 6 << " " << i + 6 << "\n";
-  }
-  return os.str();
-}
-
-std::string prism_30_60_90_off()
-{
-  const double c = 1.0 / std::sqrt(3.0);
-  std::ostringstream os;
-  os.precision(17);
-  os << "OFF\n6 8 0\n0 0 0\n1 0 0\n0 " << c << " 0\n0 0 1\n1 0 1\n0 " << c << " 1\n"
-     << "3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n";
-  return os.str();
+  return tetrahedral_mesh_of_off<Mesh>(name, text, max_volume);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -33,13 +33,7 @@ namespace {
 
 const std::string example_data = HEXREM_EXAMPLE_DATA_DIR;
 
-Mesh load(const std::string& file, double max_volume)
-{
-  Mesh m;
-  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::split_boundary_chords(true,
-                                           HR::parameters::maximum_tetrahedron_volume(max_volume)));
-  return m;
-}
+Mesh load(const std::string& file, double max_volume = 0) { return load_tetrahedral_mesh<Mesh>(file, max_volume); }
 
 // Independent checks of a hex mesh: every corner positively oriented (exact), every quad used once
 // (boundary) or twice with opposite orientations (interior), the volume.
@@ -89,14 +83,7 @@ Cell_check check_cells(const HR::Hexahedral_mesh_3& h)
 
 Mesh from_off(const std::string& name, const std::string& text, double max_volume)
 {
-  const std::string off = (std::filesystem::temp_directory_path() / (name + ".off")).string();
-  {
-    std::ofstream out(off);
-    out << text;
-  }
-  Mesh m = load(off, max_volume);
-  std::remove(off.c_str());
-  return m;
+  return tetrahedral_mesh_of_off<Mesh>(name, text, max_volume);
 }
 
 struct Counting_visitor : HR::Hexahedral_remeshing_visitor

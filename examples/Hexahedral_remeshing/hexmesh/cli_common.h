@@ -10,7 +10,10 @@
 #include <CGAL/Hexahedral_remeshing/boundary_edge_valences.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
+#include <unistd.h>
+
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -228,15 +231,30 @@ inline CGAL::Hexahedral_remeshing::Valence_heuristic heuristic_option(const Argu
 class Output_files
 {
 public:
-  // Registers an output file; throws Error (exit 5) naming it if it cannot be created.
+  // Registers an output file; throws Usage_error (exit 2) if two outputs share a path, Error (exit 5)
+  // naming it if it cannot be written (a directory, a missing or read-only directory, a read-only file).
+  // Nothing is created or removed here.
   void add(const std::string& filename)
   {
-    const std::string probe = filename + ".tmp";
-    {
-      std::ofstream out(probe, std::ios::app);
-      if(!out) throw CGAL::Hexahedral_remeshing::Error(filename + ": cannot open file for writing");
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(filename, ec);
+    for(const std::string& other : m_registered)
+      if(fs::weakly_canonical(other, ec) == canonical)
+        throw Usage_error("two outputs are the same file: " + filename);
+    m_registered.push_back(filename);
+    const fs::file_status status = fs::status(filename, ec);
+    if(fs::is_directory(status)) throw CGAL::Hexahedral_remeshing::Error(filename + ": is a directory, not a file");
+    if(fs::exists(status)) {
+      if(::access(filename.c_str(), W_OK) != 0)
+        throw CGAL::Hexahedral_remeshing::Error(filename + ": cannot open file for writing (permission denied)");
+      if(!fs::is_regular_file(status)) return; // a device or a FIFO is written directly
     }
-    std::remove(probe.c_str());
+    fs::path dir = canonical.parent_path();
+    if(dir.empty()) dir = ".";
+    if(!fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0)
+      throw CGAL::Hexahedral_remeshing::Error(filename + ": cannot open file for writing (no writable directory " +
+                                              dir.string() + ")");
   }
   // Runs `write` (which writes `filenames`); on failure removes every file written so far.
   void write(const std::vector<std::string>& filenames, const std::function<void()>& write)
@@ -251,7 +269,7 @@ public:
     m_written.insert(m_written.end(), filenames.begin(), filenames.end());
   }
 private:
-  std::vector<std::string> m_written;
+  std::vector<std::string> m_written, m_registered;
 };
 
 } // namespace hexmesh

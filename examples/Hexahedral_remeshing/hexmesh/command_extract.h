@@ -131,6 +131,10 @@ inline int command_extract(const Arguments& args)
         .value("vertices", r.vertices)
         .value("degenerate_tetrahedra", r.degenerate_tetrahedra)
         .value("inverted_tetrahedra", r.inverted_tetrahedra)
+        .value("inverted_positions", r.inverted_positions)
+        .value("folded_cells", r.folded_cells)
+        .value("inconsistent_walks", r.inconsistent_walks)
+        .value("sanitizing_failures", r.sanitizing_failures)
         .value("untraced_corners", r.untraced_corners)
         .value("incomplete_cells", r.incomplete_cells)
         .value("duplicate_cells", r.duplicate_cells)
@@ -155,7 +159,8 @@ inline int command_extract(const Arguments& args)
     std::cout << in << ": integer-grid map of " << map.number_of_tetrahedra() << " tetrahedra\n"
               << "  extraction          " << (r.status == HR::Hexahedral_extraction_result::OK ? "OK" : "with defects")
               << ": " << r.degenerate_tetrahedra << " degenerate and " << r.inverted_tetrahedra
-              << " inverted tetrahedra, " << r.incomplete_cells << " incomplete cells left out\n";
+              << " inverted tetrahedra in parameter space, " << r.inverted_positions << " inverted in space, "
+              << r.incomplete_cells << " incomplete cells left out\n";
     print_hexahedral_mesh_check(std::cout, check);
     std::cout << std::fixed << std::setprecision(3) << "  seconds             read " << read_seconds << ", extraction "
               << r.seconds << "\n" << std::defaultfloat
@@ -163,9 +168,11 @@ inline int command_extract(const Arguments& args)
     if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
   }
   if(r.status != HR::Hexahedral_extraction_result::OK)
-    std::cerr << "hexmesh: warning: " << in << ": the map has defects (" << r.inverted_tetrahedra << " inverted, "
-              << r.degenerate_tetrahedra << " degenerate tetrahedra): " << r.incomplete_cells
-              << " cells could not be completed and were left out\n";
+    std::cerr << "hexmesh: warning: " << in << ": defects met: " << r.inverted_tetrahedra << " tetrahedra inverted and "
+              << r.degenerate_tetrahedra << " flat in parameter space, " << r.inverted_positions
+              << " inverted in space, " << r.folded_cells << " folded cells, " << r.untraced_corners
+              << " untraced corners, " << r.inconsistent_walks << " inconsistent walks, " << r.sanitizing_failures
+              << " sanitizing failures; " << r.incomplete_cells << " cells could not be completed and were left out\n";
   return EXIT_OK;
 }
 

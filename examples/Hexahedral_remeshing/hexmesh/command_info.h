@@ -63,6 +63,11 @@ inline void read_input_mesh(const Arguments& args, const std::string& in, Mesh& 
 {
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
   typedef CGAL::Hexahedral_remeshing::Coincident_vertices Coincident;
+  // TetGen loops on radius-edge bounds below 1 and reads a non-positive volume bound as none
+  const double radius_edge = args.number("radius-edge", 2.);
+  if(radius_edge != 0 && radius_edge < 1) throw Usage_error("option --radius-edge expects 0 (no refinement) or a bound >= 1");
+  if(args.has("max-volume") && !(args.number("max-volume", 0.) > 0))
+    throw Usage_error("option --max-volume expects a positive volume");
   const double mesh_size = args.number("mesh-size", 0.);
   if(args.has("mesh-size") && !(mesh_size > 0)) throw Usage_error("option --mesh-size expects a positive length");
   const std::string coincident = args.value("coincident-vertices", "refuse");

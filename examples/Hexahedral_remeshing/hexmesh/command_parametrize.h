@@ -3,7 +3,7 @@
 // Author(s) : Hexahedral_remeshing developers
 //
 // hexmesh parametrize IN --hexex OUT.hexex [--vtk OUT.vtk] [--json REPORT] [--valences-out F]
-//                        [--target-edge-length H] [--heuristic NAME] [--valences F] [--baseline] [--quiet]
+//                        [--target-edge-length H] [--heuristic NAME] [--valences F] [--baseline] [--keep-partial] [--quiet]
 // The frame-field pipeline, then the seamless integer-grid map (paper Sec. 3.4).
 #ifndef HEXMESH_COMMAND_PARAMETRIZE_H
 #define HEXMESH_COMMAND_PARAMETRIZE_H
@@ -33,7 +33,7 @@ inline std::vector<std::string> parametrize_options()
   return options;
 }
 
-inline std::vector<std::string> parametrize_flags() { return {"baseline", "no-chord-split", "quiet"}; }
+inline std::vector<std::string> parametrize_flags() { return {"baseline", "no-chord-split", "keep-partial", "quiet"}; }
 
 // The --target-edge-length option: a positive number of model units, 0 when absent (default size).
 inline double target_edge_length_option(const Arguments& args)
@@ -148,14 +148,18 @@ inline int command_parametrize(const Arguments& args)
   const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
   progress.finish();
 
+  // a map whose tetrahedra fold (or that the solver could not make) is a failed stage: only its JSON report
+  // is written, unless --keep-partial; flat tetrahedra (collapsed jogs) are tolerated by the extraction
+  const bool usable = m.status == HR::Integer_grid_map_status::OK || m.status == HR::Integer_grid_map_status::DEGENERATE_TETRAHEDRA;
+  const bool write_map = usable || args.has("keep-partial");
   progress.start("writing the outputs");
   const std::string hexex = args.value("hexex");
-  outputs.write({hexex}, [&] { HR::IO::write_HexEx(hexex, map); });
-  if(args.has("vtk")) {
+  if(write_map) outputs.write({hexex}, [&] { HR::IO::write_HexEx(hexex, map); });
+  if(args.has("vtk") && write_map) {
     const std::string v = args.value("vtk");
     outputs.write({v}, [&] { HR::IO::write_VTK_integer_grid_map(v, map); });
   }
-  if(args.has("valences-out")) {
+  if(args.has("valences-out") && write_map) {
     const std::string v = args.value("valences-out");
     outputs.write({v}, [&] { HR::IO::write_edge_valences(v, mesh, f.valences); });
   }
@@ -203,14 +207,18 @@ inline int command_parametrize(const Arguments& args)
               << ", elimination " << m.elimination_seconds << ", rounding " << m.rounding_seconds << ", stiffening "
               << m.stiffening_seconds << ", untangling " << m.untangling_seconds << ", sanitize " << m.sanitize_seconds
               << ")\n" << std::defaultfloat
-              << "  map                 " << hexex << " (hexmesh extract " << hexex << " --out OUT.mesh)\n";
+              << "  map                 " << (write_map ? hexex + " (hexmesh extract " + hexex + " --out OUT.mesh)" : std::string("not written"))
+              << "\n";
     if(args.has("vtk")) std::cout << "  ParaView            " << args.value("vtk") << " (exploded tetrahedra, point data uvw)\n";
     if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
   }
+  const std::string what = std::string("integer-grid map status ") + HR::status_name(m.status) + " (" +
+                           std::to_string(m.inverted_tetrahedra) + " inverted, " + std::to_string(m.degenerate_tetrahedra) +
+                           " flat tetrahedra, " + std::to_string(m.defects.size()) + " non-meshable singularities)";
+  if(!usable)
+    throw Stage_error(in + ": " + what + (write_map ? " (map written: --keep-partial)" : " (no map written)"));
   if(m.status != HR::Integer_grid_map_status::OK)
-    std::cerr << "hexmesh: warning: " << in << ": integer-grid map status " << CGAL::Hexahedral_remeshing::status_name(m.status)
-              << " (" << m.inverted_tetrahedra << " inverted, " << m.degenerate_tetrahedra << " degenerate tetrahedra, "
-              << m.defects.size() << " non-meshable singularities)\n";
+    std::cerr << "hexmesh: warning: " << in << ": " << what << "\n";
   return EXIT_OK;
 }
 

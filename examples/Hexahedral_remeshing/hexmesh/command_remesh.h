@@ -3,7 +3,7 @@
 // Author(s) : Hexahedral_remeshing developers
 //
 // hexmesh remesh IN --out OUT.{mesh,vtk} [--target-edge-length H | --hexahedra N] [--heuristic NAME]
-//                [--valences F] [--baseline] [--no-smoothing] [--frames F] [--singularities F] [--json F]
+//                [--valences F] [--valences-out F] [--baseline] [--no-smoothing] [--frames F] [--singularities F] [--json F]
 //                [--keep-partial] [--threads N] [--quiet]
 // The whole pipeline in one call, CGAL::hexahedral_remeshing(): tetrahedra in, hexahedra out.
 #ifndef HEXMESH_COMMAND_REMESH_H
@@ -17,6 +17,7 @@
 #include <CGAL/hexahedral_remeshing.h>
 
 #include <iomanip>
+#include <limits>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -26,8 +27,8 @@ namespace hexmesh {
 inline std::vector<std::string> remesh_options()
 {
   std::vector<std::string> options = input_options();
-  for(const char* o : {"out", "heuristic", "valences", "frames", "singularities", "json", "target-edge-length",
-                       "hexahedra", "threads"})
+  for(const char* o : {"out", "heuristic", "valences", "frames", "singularities", "json", "valences-out",
+                       "target-edge-length", "hexahedra", "threads"})
     options.push_back(o);
   return options;
 }
@@ -46,10 +47,10 @@ inline int command_remesh(const Arguments& args)
   const double target = target_edge_length_option(args);
   if(args.has("target-edge-length") && args.has("hexahedra"))
     throw Usage_error("give either --target-edge-length or --hexahedra, not both");
-  const std::size_t hexahedra = args.has("hexahedra") ? std::size_t(args.integer("hexahedra", 0, 1, 100000000)) : 0;
+  const std::size_t hexahedra = args.has("hexahedra") ? std::size_t(args.integer("hexahedra", 0, 1, 20000000)) : 0;
   Output_files outputs;
   outputs.add(out);
-  for(const char* o : {"frames", "singularities", "json"})
+  for(const char* o : {"frames", "singularities", "json", "valences-out"})
     if(args.has(o)) outputs.add(args.value(o));
 
   Progress progress(options.quiet);
@@ -81,13 +82,18 @@ inline int command_remesh(const Arguments& args)
 
   progress.start("writing the outputs");
   if(write_hexes) outputs.write({out}, [&] { HR::IO::write_hexahedral_mesh(out, hexes); });
-  if(args.has("frames")) {
+  // a failed run writes its JSON report only (and the partial outputs with --keep-partial)
+  if(args.has("frames") && write_hexes) {
     const std::string f = args.value("frames");
     outputs.write({f}, [&] { HR::IO::write_VTK_frame_field(f, mesh, r.frame_field.frames); });
   }
-  if(args.has("singularities")) {
+  if(args.has("singularities") && write_hexes) {
     const std::string f = args.value("singularities");
     outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, r.frame_field.singularities); });
+  }
+  if(args.has("valences-out") && write_hexes) {
+    const std::string v = args.value("valences-out");
+    outputs.write({v}, [&] { HR::IO::write_edge_valences(v, mesh, r.frame_field.valences); });
   }
   if(args.has("json")) {
     const HR::Frame_field_pipeline_result& f = r.frame_field;
@@ -125,7 +131,8 @@ inline int command_remesh(const Arguments& args)
         .value("coverage", r.feature_coverage)
         .value("hex_feature_edges", r.hex_feature_edges)
         .value("hex_feature_edges_with_prescribed_valence", r.hex_feature_edges_with_prescribed_valence)
-        .value("relative_hausdorff_distance", r.relative_hausdorff_distance)
+        .value("relative_hausdorff_distance", r.relative_hausdorff_distance >= 0 ? r.relative_hausdorff_distance
+                                                                                 : std::numeric_limits<double>::quiet_NaN())
         .value("volume_ratio", r.volume_ratio)
         .end();
     json.begin("seconds")
@@ -157,8 +164,15 @@ inline int command_remesh(const Arguments& args)
       std::cout << "  features            " << r.hex_feature_edges_with_prescribed_valence << "/" << r.hex_feature_edges
                 << " hex edges on sharp edges with the prescribed valence; " << std::fixed << std::setprecision(1)
                 << 100 * r.feature_coverage << "% of the sharp-edge length on hex edges; hex volume "
-                << std::setprecision(3) << r.volume_ratio << " of the solid's; Hausdorff distance " << std::scientific
-                << std::setprecision(2) << r.relative_hausdorff_distance << " of the diagonal\n"
+                << std::setprecision(3) << r.volume_ratio << " of the solid's; Hausdorff distance ";
+      if(r.relative_hausdorff_distance >= 0)
+        std::cout << std::scientific << std::setprecision(2) << r.relative_hausdorff_distance << " of the diagonal\n";
+      else
+        std::cout << "not computed (the smoothing did not run)\n";
+      std::cout << std::defaultfloat;
+      if(r.extraction.incomplete_cells > 0)
+        std::cout << "  incomplete          " << r.extraction.incomplete_cells
+                  << " cells of the map could not be completed and are missing\n"
                 << std::defaultfloat;
       if(r.smoothed)
         std::cout << std::fixed << std::setprecision(3) << "  smoothing           min scaled Jacobian "
@@ -172,6 +186,7 @@ inline int command_remesh(const Arguments& args)
     if(write_hexes) std::cout << "  hex mesh            " << out << (ok ? "" : " (partial: --keep-partial)") << "\n";
     if(args.has("frames")) std::cout << "  ParaView            " << args.value("frames") << " (frames: Glyph on frame_u, frame_v, frame_w)\n";
     if(args.has("singularities")) std::cout << "  ParaView            " << args.value("singularities") << " (singular curves)\n";
+    if(args.has("valences-out")) std::cout << "  valences            " << args.value("valences-out") << " (a b k: edit, then --valences)\n";
     if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
   }
   if(!ok) throw Stage_error(in + ": " + HR::status_name(r.status) + ": " + r.message +

@@ -101,7 +101,8 @@ struct Hexahedral_remeshing_result
   Integer_grid_map_check map_check;
   /// Report of the extraction.
   Hexahedral_extraction_result extraction;
-  /// True if the hex mesh was untangled and smoothed.
+  /// True if the hex mesh was untangled and smoothed (not when cells are missing: the mesh is then
+  /// reported as extracted).
   bool smoothed = false;
   /// Report of the smoothing (quality before and after, Hausdorff distance to the input boundary).
   Hexahedral_smoothing_report smoothing;

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <string>
@@ -40,7 +41,22 @@ struct VTK_array
 template <class Writer>
 void write_file_atomically(const std::string& filename, const Writer& write)
 {
-  const std::string tmp = filename + ".tmp";
+  // A symbolic link is followed (the file it points to is replaced, the link kept); a device or a
+  // FIFO (/dev/null, /dev/stdout, a pipe) cannot be replaced by a renamed file: it is written directly.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path target = fs::is_symlink(filename, ec) ? fs::weakly_canonical(filename, ec) : fs::path(filename);
+  const fs::file_status status = fs::status(target, ec);
+  if(fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
+    std::ofstream out(target);
+    if(!out) throw Error(filename + ": cannot open file for writing");
+    out << std::setprecision(17);
+    write(out);
+    out.flush();
+    if(!out) throw Error(filename + ": write error");
+    return;
+  }
+  const std::string tmp = target.string() + ".tmp";
   {
     std::ofstream out(tmp);
     if(!out) throw Error(filename + ": cannot open file for writing");
@@ -57,7 +73,7 @@ void write_file_atomically(const std::string& filename, const Writer& write)
     out.close();
     if(!out) { std::remove(tmp.c_str()); throw Error(filename + ": write error"); }
   }
-  if(std::rename(tmp.c_str(), filename.c_str()) != 0) {
+  if(std::rename(tmp.c_str(), target.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw Error(filename + ": cannot rename the temporary output file");
   }

@@ -63,6 +63,14 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
   double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), 0.);
   const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_hexahedra), std::size_t(0)));
   if(!(h > 0) && n > 0) h = std::cbrt(tetrahedral_mesh_volume(mesh) / n);
+  // a size that would make more hexahedra than fit in memory is refused before the work starts
+  if(h > 0) {
+    const double estimate = tetrahedral_mesh_volume(mesh) / (h * h * h);
+    if(estimate > 2e7)
+      throw Input_error(mesh.source(), 0, "target_edge_length " + std::to_string(h) + " would give about " +
+                                              std::to_string(std::llround(estimate)) +
+                                              " hexahedra (at most 2e7): choose a larger edge length");
+  }
   Integer_grid_map map;
   if(h > 0)
     r.map = compute_integer_grid_map(mesh, r.frame_field.frames, r.frame_field.matchings, r.frame_field.singularities,
@@ -80,10 +88,20 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
     return r;
   }
 
-  if(choose_parameter(get_parameter(np, internal_np::hexahedral_smoothing), true)) {
+  // smoothing cannot fill the cells the extraction left out: an incomplete mesh is reported as it is
+  const bool incomplete = r.extraction.incomplete_cells + r.extraction.untraced_corners > 0;
+  if(!incomplete && choose_parameter(get_parameter(np, internal_np::hexahedral_smoothing), true)) {
     visitor.start_stage("hex smoothing");
     const auto t = Clock::now();
-    r.smoothing = smooth_hexahedral_mesh(hexes, make_hexahedral_smoothing_reference(mesh));
+    // the smoothing's own parameters are passed on (its visitor hooks differ: the stage is reported here)
+    r.smoothing = smooth_hexahedral_mesh(
+      hexes, make_hexahedral_smoothing_reference(mesh),
+      parameters::smoothing_sharp_angle(
+        choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.),
+        parameters::smoothing_boundary(
+          choose_parameter(get_parameter(np, internal_np::smoothing_boundary), Hexahedral_smoothing_boundary::SLIDE),
+          CGAL::parameters::number_of_iterations(
+            choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5)))));
     r.smoothed = true;
     visitor.end_stage("hex smoothing", seconds_since(t));
   }
