@@ -112,7 +112,7 @@ public:
       {"unsigned_short", 2}, {"short", 2}, {"vtktypeint16", 2}, {"vtktypeuint16", 2},
       {"unsigned_int", 4}, {"int", 4}, {"vtktypeint32", 4}, {"vtktypeuint32", 4}, {"float", 4},
       {"unsigned_long", 8}, {"long", 8}, {"vtktypeint64", 8}, {"vtktypeuint64", 8}, {"vtkIdType", 8},
-      {"double", 8}};
+      {"double", 8}, {"vtktypefloat32", 4}, {"vtktypefloat64", 8}};
     const auto it = sizes.find(type);
     return it == sizes.end() ? 0 : it->second;
   }
@@ -155,8 +155,8 @@ public:
       for(std::size_t k = 0; k < size; ++k) u = (u << 8) | b[k];
       double v = 0;
       const bool is_unsigned = type.compare(0, 8, "unsigned") == 0 || type.compare(0, 8, "vtktypeu") == 0;
-      if(type == "float") { std::uint32_t w = std::uint32_t(u); float f; std::memcpy(&f, &w, 4); v = f; }
-      else if(type == "double") { std::memcpy(&v, &u, 8); }
+      if(type == "float" || type == "vtktypefloat32") { std::uint32_t w = std::uint32_t(u); float f; std::memcpy(&f, &w, 4); v = f; }
+      else if(type == "double" || type == "vtktypefloat64") { std::memcpy(&v, &u, 8); }
       else if(is_unsigned) { v = double(u); }
       else {
         // sign extension of a two's-complement integer of `size` bytes
