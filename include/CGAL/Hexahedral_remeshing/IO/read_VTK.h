@@ -296,7 +296,12 @@ void read_VTK(const std::string& text, const std::string& source, Tetrahedral_so
     if(priority <= entity_priority) return;
     entity_priority = priority;
     cell_entity.assign(v.size(), 0);
-    for(std::size_t i = 0; i < v.size(); ++i) cell_entity[i] = (long long)v[i];
+    for(std::size_t i = 0; i < v.size(); ++i) {
+      // (found by scripts/fuzz: an id of 1e30 does not convert to an integer)
+      if(!(std::abs(v[i]) <= 2147483647.0) || v[i] != std::floor(v[i]))
+        rd.fail(name + ": value " + std::to_string(v[i]) + " of cell " + std::to_string(i) + " is not an integer id");
+      cell_entity[i] = (long long)v[i];
+    }
   };
 
   while(!rd.at_end()) {
