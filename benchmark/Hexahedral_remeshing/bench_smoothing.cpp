@@ -79,7 +79,12 @@ bool extracted(const std::string& file, HR::Hexahedral_mesh_3& hexes, HR::Hexahe
   soup.points.assign(map.points.begin(), map.points.end());
   for(const auto& t : map.tetrahedra) soup.tetrahedra.push_back({ {t[0], t[1], t[2], t[3]} });
   HR::Tetrahedral_mesh_3<> tets;
-  HR::build_tetrahedral_mesh(soup, tets, HR::parameters::split_multi_boundary_tetrahedra(false));
+  try {
+    HR::build_tetrahedral_mesh(soup, tets, HR::parameters::split_multi_boundary_tetrahedra(false));
+  } catch(const std::exception& e) {
+    std::cout << std::filesystem::path(file).stem().string() << ": no reference (" << e.what() << ")\n";
+    return false;
+  }
   ref = HR::make_hexahedral_smoothing_reference(tets);
   return hexes.number_of_hexahedra() > 0;
 }
@@ -114,7 +119,7 @@ void run(const std::string& name, const HR::Hexahedral_mesh_3& input, const HR::
 
 int main(int argc, char** argv)
 {
-  int runs = 3, iterations = 5;
+  int runs = 3, iterations = 10;
   std::vector<int> grids{20, 30, 46};
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {

@@ -140,7 +140,7 @@ template <class T> unspecified_type smoothing_boundary(const T& value);
 /// Hex smoothing: vertices that must not move (`std::vector<bool>` indexed by vertex, default empty).
 template <class T> unspecified_type smoothing_fixed_vertices(const T& value);
 /// Hex smoothing: angle in degrees between the normals of two reference triangles above which their
-/// common edge is sharp (`double`, default 30; <= 0: no detection).
+/// common edge is sharp (`double`, default 60; <= 0: no detection).
 template <class T> unspecified_type smoothing_sharp_angle(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_boundary)
@@ -323,7 +323,7 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
   using CGAL::parameters::get_parameter_reference;
   typedef Hexahedral_mesh_3::Point_3 Point;
   const auto start = std::chrono::steady_clock::now();
-  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5);
+  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
   const Hexahedral_smoothing_boundary boundary =
     choose_parameter(get_parameter(np, internal_np::smoothing_boundary), Hexahedral_smoothing_boundary::SLIDE);
   const std::vector<bool> user_fixed =
@@ -340,7 +340,7 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
         throw Input_error("<memory>", 0, "hexahedron " + std::to_string(h) + ": vertex index " + std::to_string(v) +
                                              " out of range (" + std::to_string(V) + " vertices)");
 
-  const double sharp_angle = choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.);
+  const double sharp_angle = choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 60.);
 
   Hexahedral_smoothing_report report;
   // the surface patches between sharp edges (given curves, and by dihedral angle); without given
@@ -471,7 +471,12 @@ Hexahedral_smoothing_report smooth_hexahedral_mesh(Hexahedral_mesh_3& hexes, con
   if(max_sweeps > 0) {
     internal::Local_hex_smoother smoother(work, constraints, projector, size, local_options);
     for(std::size_t sweep = 1; sweep <= max_sweeps; ++sweep) {
-      const std::size_t moves = smoother.sweep(active);
+      std::size_t moves = smoother.sweep(active);
+      // the worst hexahedra: their minimum raised directly (the energy averages over the corners)
+      double worst = (std::numeric_limits<double>::max)();
+      for(double x : smoother.scaled_jacobians()) worst = (std::min)(worst, x);
+      const std::size_t raised = smoother.raise_minimum_pass((std::min)(local_options.quality_floor, worst + 0.1));
+      moves += raised;
       report.vertex_moves += moves;
       report.rounds = int(sweep);
       const Hexahedral_mesh_quality q = internal::hex_mesh_quality(work, constraints, projector);

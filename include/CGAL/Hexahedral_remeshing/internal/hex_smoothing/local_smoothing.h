@@ -36,10 +36,13 @@ struct Local_smoothing_options
   // a star's smallest scaled Jacobian may drop only while it stays at least this high (or the
   // star's own minimum before the move, if that is lower)
   double quality_floor = 0.5;
+  // the low-quality threshold of the reports: a move that raises a star's minimum may lower its other
+  // hexahedra, but not below this
+  double low_quality = 0.3;
   // Newton steps per vertex visit
-  int newton_steps = 2;
+  int newton_steps = 1;
   // a vertex that moves less than this fraction of its hex size does not wake its neighbours
-  double move_tolerance = 1e-4;
+  double move_tolerance = 1e-3;
 };
 
 // Per-vertex incidences (hexahedron, local corner), CSR.
@@ -84,8 +87,20 @@ public:
     : m_mesh(mesh), m_constraints(constraints), m_reference(reference), m_size(hex_size), m_options(options),
       m_stars(make_hex_vertex_stars(mesh)), m_sj(mesh.number_of_hexahedra())
   {
-    for(std::size_t h = 0; h < m_sj.size(); ++h) m_sj[h] = hex_sj(h);
+    double worst = (std::numeric_limits<double>::max)();
+    for(std::size_t h = 0; h < m_sj.size(); ++h) {
+      m_sj[h] = hex_sj(h);
+      worst = (std::min)(worst, m_sj[h]);
+    }
+    // on a mesh already better than the floors, they rise to its minimum: no move may lower it
+    if(!m_sj.empty()) {
+      m_options.quality_floor = (std::max)(m_options.quality_floor, worst);
+      m_options.low_quality = (std::max)(m_options.low_quality, worst);
+    }
     const std::size_t V = mesh.number_of_vertices();
+    std::uint32_t largest = 0;
+    for(std::size_t v = 0; v < V; ++v) largest = (std::max)(largest, m_stars.offset[v + 1] - m_stars.offset[v]);
+    m_trial.resize(largest);
     m_vertex_size.assign(V, 0.);
     for(std::size_t v = 0; v < V; ++v) {
       double s = 0;
@@ -218,24 +233,121 @@ public:
         project(v, x);
       }
       if((x - x_old).norm() <= 1e-12 * hsize) break;
-      m_mesh.points[v] = Point(x[0], x[1], x[2]);
-      double m = (std::numeric_limits<double>::max)();
-      int bad = 0;
-      for(std::uint32_t i = m_stars.offset[v]; i < m_stars.offset[v + 1]; ++i) {
-        const double s = hex_sj(m_stars.hex[i]);
-        m_trial[i - m_stars.offset[v]] = s;
-        m = (std::min)(m, s);
-        if(s <= 0) ++bad;
-      }
-      const double required = (std::min)(before.first, m_options.quality_floor);
-      if(m >= required && bad <= before.second) {
-        for(std::uint32_t i = m_stars.offset[v]; i < m_stars.offset[v + 1]; ++i)
-          m_sj[m_stars.hex[i]] = m_trial[i - m_stars.offset[v]];
-        return (x - x_old).norm();
+      const bool lower = before.second > 0 && star_energy(v, x, eps, nullptr) < star_energy(v, x_old, eps, nullptr);
+      if(try_move(v, x, before, lower)) return (x - x_old).norm();
+    }
+    return 0;
+  }
+
+  // Moves v to x if its star stays acceptable: no hexahedron below the floor gets worse and none above
+  // falls below it; or the star's minimum rises and the others stay above min(their own, 0.3); or the
+  // star has a hexahedron with SJ <= 0 and its minimum rises or (`energy_decreased`) the move lowers
+  // its foldover-free energy. The number of hexahedra with SJ <= 0
+  // never grows. Otherwise v stays where it was.
+  bool try_move(std::size_t v, const Eigen::Vector3d& x, const std::pair<double, int>& before, bool energy_decreased = false)
+  {
+    const Point old_point = m_mesh.points[v];
+    m_mesh.points[v] = Point(x[0], x[1], x[2]);
+    double m = (std::numeric_limits<double>::max)();
+    int bad = 0;
+    for(std::uint32_t i = m_stars.offset[v]; i < m_stars.offset[v + 1]; ++i) {
+      const double s = hex_sj(m_stars.hex[i]);
+      m_trial[i - m_stars.offset[v]] = s;
+      m = (std::min)(m, s);
+      if(s <= 0) ++bad;
+    }
+    bool ok = bad <= before.second;
+    const bool raised = m > before.first + 1e-9;
+    // a tangled star: the foldover-free energy decides (its scaled Jacobians are not monotone along
+    // the way out of a fold: a corner gets more inverted before it flips), as long as no hexahedron
+    // is added to the non-positive ones; the best-state selection of the caller keeps the minimum
+    const bool untangling = before.second > 0 && (raised || energy_decreased);
+    for(std::uint32_t i = m_stars.offset[v]; ok && !untangling && i < m_stars.offset[v + 1]; ++i) {
+      const double old_sj = m_sj[m_stars.hex[i]], new_sj = m_trial[i - m_stars.offset[v]];
+      ok = new_sj >= (std::min)(old_sj, m_options.quality_floor) ||
+           (raised && new_sj >= (std::min)(old_sj, (std::max)(m, m_options.low_quality)));
+    }
+    if(!ok) {
+      m_mesh.points[v] = old_point;
+      return false;
+    }
+    for(std::uint32_t i = m_stars.offset[v]; i < m_stars.offset[v + 1]; ++i) m_sj[m_stars.hex[i]] = m_trial[i - m_stars.offset[v]];
+    return true;
+  }
+
+  // Soft minimum (-log sum exp(-t sj) / t) of the corner scaled Jacobians of the star of v with v at x.
+  double star_soft_min(std::size_t v, const Eigen::Vector3d& x, double t)
+  {
+    const Point old_point = m_mesh.points[v];
+    m_mesh.points[v] = Point(x[0], x[1], x[2]);
+    m_corner_sj.clear();
+    double lo = (std::numeric_limits<double>::max)();
+    for(std::uint32_t k = m_stars.offset[v]; k < m_stars.offset[v + 1]; ++k) {
+      std::array<Point, 8> p;
+      for(int i = 0; i < 8; ++i) p[i] = m_mesh.points[m_mesh.hexahedra[m_stars.hex[k]][i]];
+      for(int c = 0; c < 8; ++c) {
+        m_corner_sj.push_back(hex_corner_scaled_jacobian(p, c));
+        lo = (std::min)(lo, m_corner_sj.back());
       }
     }
     m_mesh.points[v] = old_point;
-    return 0;
+    double sum = 0;
+    for(double c : m_corner_sj) sum += std::exp(-t * (c - lo));
+    return lo - std::log(sum) / t;
+  }
+
+  // Raises the smallest scaled Jacobian of the star of v directly: ascent on its soft minimum (finite
+  // differences in the degrees of freedom of v), a step kept only if the true minimum rises. For the
+  // worst hexahedra, whose corners the corner-tet energy trades against the rest of the star.
+  bool raise_star_minimum(std::size_t v)
+  {
+    if(!movable(v)) return false;
+    const double hsize = m_vertex_size[v];
+    if(!(hsize > 0)) return false;
+    const Point p0 = m_mesh.points[v];
+    Eigen::Vector3d x(p0.x(), p0.y(), p0.z());
+    bool moved = false;
+    double step = 0.05 * hsize;
+    for(int it = 0; it < 8; ++it) {
+      const std::pair<double, int> before = star_quality(v);
+      Eigen::Matrix<double, 3, Eigen::Dynamic> B;
+      if(!basis(v, x, B)) break;
+      const double t = 50.;
+      const double f0 = star_soft_min(v, x, t);
+      const double h = 1e-6 * hsize;
+      Eigen::Vector3d g = Eigen::Vector3d::Zero();
+      for(int a = 0; a < int(B.cols()); ++a) g += (star_soft_min(v, x + h * B.col(a), t) - f0) / h * B.col(a);
+      const double gn = g.norm();
+      if(!(gn > 0) || !std::isfinite(gn)) break;
+      bool accepted = false;
+      for(int ls = 0; ls < 6 && !accepted; ++ls, step *= 0.5) {
+        Eigen::Vector3d xn = x + (step / gn) * g;
+        project(v, xn);
+        if(try_move(v, xn, before)) {
+          x = xn;
+          moved = true;
+          accepted = star_quality(v).first > before.first + 1e-9;
+          if(!accepted) return true; // acceptable but no higher: the ascent is over
+        }
+      }
+      if(!accepted) break;
+      step *= 4; // the next iteration starts from a longer step again
+    }
+    return moved;
+  }
+
+  // raise_star_minimum() on the vertices (in index order) of the hexahedra whose scaled Jacobian is
+  // below `threshold`. Returns the number of vertices moved.
+  std::size_t raise_minimum_pass(double threshold)
+  {
+    std::vector<char> low(m_mesh.number_of_vertices(), 0);
+    for(std::size_t h = 0; h < m_sj.size(); ++h)
+      if(m_sj[h] < threshold)
+        for(std::uint32_t v : m_mesh.hexahedra[h]) low[v] = 1;
+    std::size_t moved = 0;
+    for(std::size_t v = 0; v < low.size(); ++v)
+      if(low[v] && raise_star_minimum(v)) ++moved;
+    return moved;
   }
 
   // One Gauss-Seidel sweep over the active vertices in index order (deterministic); the vertices of
@@ -245,11 +357,8 @@ public:
     const std::size_t V = m_mesh.number_of_vertices();
     std::vector<char> next(V, 0);
     std::size_t moves = 0;
-    m_trial.resize(64);
     for(std::size_t v = 0; v < V; ++v) {
       if(!active[v] || !movable(v)) continue;
-      const std::uint32_t n = m_stars.offset[v + 1] - m_stars.offset[v];
-      if(m_trial.size() < n) m_trial.resize(n);
       const double moved = relax_vertex(v);
       if(moved > m_options.move_tolerance * m_vertex_size[v]) {
         ++moves;
@@ -345,6 +454,7 @@ private:
   std::vector<double> m_sj;
   std::vector<double> m_vertex_size;
   std::vector<double> m_trial;
+  std::vector<double> m_corner_sj;
 };
 
 } // namespace internal

@@ -35,7 +35,7 @@ struct Hex_vertex_constraint
   bool on_boundary = false; // topologically on the hex boundary or tagged BOUNDARY
 };
 
-// Which vertex lies on what. With `mesh.vertex_tags` (full size): CORNER -> FIXED, FEATURE_CURVE ->
+// Which vertex lies on what. With `mesh.vertex_tags` (full size, not all 0): CORNER -> FIXED, FEATURE_CURVE ->
 // CURVE on the nearest polyline, BOUNDARY -> SURFACE (or CURVE / FIXED if it lies on a polyline /
 // corner, by distance as below), untagged -> INTERIOR even on a boundary quad (hole of a partial mesh). Without: the vertices of the boundary quads,
 // then by distance, below 1e-3 of their shortest hex edge: to a reference corner -> FIXED, to a
@@ -50,7 +50,9 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
   std::vector<Hex_vertex_constraint> c(n);
   for(const auto& q : boundary_quads)
     for(std::uint32_t v : q) c[v].on_boundary = true;
-  const bool tagged = mesh.vertex_tags.size() == n;
+  // all-zero tags carry no information (a MEDIT file whose vertex references are all 0)
+  const bool tagged = mesh.vertex_tags.size() == n &&
+                      std::any_of(mesh.vertex_tags.begin(), mesh.vertex_tags.end(), [](std::uint8_t t) { return t != 0; });
   std::vector<double> shortest(n, (std::numeric_limits<double>::max)());
   for(const auto& h : mesh.hexahedra)
       for(const auto& e : hex_edges()) {
