@@ -101,7 +101,7 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
         parameters::smoothing_boundary(
           choose_parameter(get_parameter(np, internal_np::smoothing_boundary), Hexahedral_smoothing_boundary::SLIDE),
           CGAL::parameters::number_of_iterations(
-            choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5)))));
+            choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10)))));
     r.smoothed = true;
     visitor.end_stage("hex smoothing", seconds_since(t));
   }
