@@ -139,8 +139,20 @@ hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& 
     HR::Tetrahedral_soup_3<Mesh::Point_3> soup;
     if constexpr(HR::internal::Is_c3t3<Input>::value)
       HR::tetrahedral_soup_from_c3t3(input, soup);
-    else
+    else if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                             HR::internal_np::maximum_tetrahedron_volume_t>::value)
       HR::tetrahedralize_surface(input, soup, np);
+    else {
+      // At the hex size: tetrahedra of at most h^3 / 6 (some 30 per hexahedron). A field on
+      // tetrahedra coarser than the hexahedra places its singular curves badly (the shipped
+      // cylinder from its surface alone: 854 tetrahedra, an inverted map; at h^3 / 6 a valid mesh).
+      HR::tetrahedralize_surface(input, soup, np);
+      Mesh coarse;
+      HR::build_tetrahedral_mesh(soup, coarse);
+      const double v = HR::internal::hex_size_tetrahedron_volume(HR::internal::tetrahedral_mesh_volume(coarse),
+                                                                 HR::internal::pipeline_hex_edge_length(coarse, np));
+      if(v > 0) HR::tetrahedralize_surface(input, soup, HR::parameters::maximum_tetrahedron_volume(v, np));
+    }
     Mesh mesh;
     HR::build_tetrahedral_mesh(soup, mesh, HR::parameters::split_boundary_chords(true));
     const double preprocessing = std::chrono::duration<double>(Clock::now() - start).count();

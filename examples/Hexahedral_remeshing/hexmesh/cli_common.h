@@ -60,6 +60,7 @@ public:
     }
   }
   bool has(const std::string& name) const { return m_values.count(name) != 0; }
+  void set(const std::string& name, const std::string& value) { m_values[name] = value; }
   std::string value(const std::string& name, const std::string& fallback = std::string()) const
   {
     auto it = m_values.find(name);

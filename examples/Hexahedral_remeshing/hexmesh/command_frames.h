@@ -18,6 +18,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/run_pipeline.h>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -25,6 +26,8 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -93,6 +96,36 @@ inline double read_frame_field_input(const Arguments& args, const std::string& i
   read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
   if(args.has("valences")) prescribed = CGAL::Hexahedral_remeshing::IO::read_edge_valences(args.value("valences"), mesh);
   return progress.finish();
+}
+
+// Surfaces and CAD parts are tetrahedralized again at the hex size unless --max-volume or --mesh-size
+// say otherwise: TetGen at most h^3/6 per tetrahedron, gmsh an edge length of 0.6 h (both some 30
+// tetrahedra per hexahedron). A field on tetrahedra coarser than the hexahedra places its singular
+// curves badly: the shipped cylinder tetrahedralized from its surface alone (854 tetrahedra) gives 5
+// valence-3 and 1 valence-5 curves and an inverted map, at h^3/6 (27,634) a valid hex mesh.
+// h: the target edge length, else the one of `hexahedra` hexahedra, else of about 2000.
+inline void tetrahedralize_for_hex_size(const Arguments& args, const std::string& in, Mesh& mesh, double target,
+                                        std::size_t hexahedra, Progress& progress)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  const std::string ext = HR::IO::file_extension(in);
+  const bool surface = ext == "off" || ext == "obj" || ext == "stl" || ext == "ply";
+  const bool cad = ext == "step" || ext == "stp" || ext == "brep" || ext == "iges" || ext == "igs";
+  if((!surface && !cad) || args.has("max-volume") || args.has("mesh-size")) return;
+  const double volume = HR::internal::tetrahedral_mesh_volume(mesh);
+  const double h = target > 0 ? target : std::cbrt(volume / double(hexahedra > 0 ? hexahedra : 2000));
+  const double max_volume = HR::internal::hex_size_tetrahedron_volume(volume, h);
+  if(!(max_volume > 0)) return;
+  Arguments sized = args;
+  std::ostringstream os;
+  // a regular tetrahedron of edge a has volume a^3 / (6 sqrt 2): gmsh's size for the same density
+  os << std::setprecision(17) << (surface ? max_volume : 0.6 * std::cbrt(6 * max_volume));
+  sized.set(surface ? "max-volume" : "mesh-size", os.str());
+  progress.start("tetrahedralizing " + in + " at the hex size");
+  Mesh fine;
+  read_input_mesh(sized, in, fine, !args.has("no-chord-split"));
+  if(fine.number_of_tetrahedra() > mesh.number_of_tetrahedra()) mesh = std::move(fine);
+  progress.finish();
 }
 
 // Runs the frame-field pipeline with progress; an impossible prescription stays an Input_error (exit 3),

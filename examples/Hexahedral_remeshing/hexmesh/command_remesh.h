@@ -56,7 +56,12 @@ inline int command_remesh(const Arguments& args)
   Progress progress(options.quiet);
   Mesh mesh;
   std::vector<std::pair<Index, int> > prescribed;
-  const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
+  double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
+  {
+    const auto start = std::chrono::steady_clock::now();
+    tetrahedralize_for_hex_size(args, in, mesh, target, hexahedra, progress);
+    read_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
 
   Frames_progress_visitor visitor(progress);
   HR::Hexahedral_mesh_3 hexes;

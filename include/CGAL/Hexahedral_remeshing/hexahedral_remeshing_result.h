@@ -40,7 +40,10 @@ enum class Hexahedral_remeshing_status {
   /// scaled Jacobian > 0, and no cell left out by the extraction.
   OK,
   /// A hex mesh was produced but it is not valid (inverted hexahedra), or cells are missing where the map
-  /// is broken (the mesh does not fill the solid): see `Hexahedral_remeshing_result::check`,
+  /// is broken (the mesh does not fill the solid), or its boundary has other components or another
+  /// Euler characteristic than the solid's (a cavity where cells were dropped), or its boundary is
+  /// more than 5% of the bounding-box diagonal away from the solid's (Hausdorff distance after the
+  /// smoothing: a slit along a seam of the map): see `Hexahedral_remeshing_result::check`,
   /// `Hexahedral_remeshing_result::volume_ratio` and the stage reports.
   INVALID_HEX_MESH,
   /// The integer-grid map has no complete integer cell: no hexahedron (the map status says why).

@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace CGAL {
@@ -28,6 +29,31 @@ double tetrahedral_mesh_volume(const Tetrahedral_mesh_3<Traits>& mesh)
     v += CGAL::to_double(CGAL::volume(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(tv[3])));
   }
   return v;
+}
+
+// Relative Hausdorff distance above which a hex mesh does not remesh the solid (chord sag of a coarse
+// mesh of the shipped cylinder: 0.013).
+constexpr double maximum_relative_hausdorff_distance = 0.05;
+
+// The hex edge length the pipeline uses on `mesh`: target_edge_length, else the one of
+// number_of_hexahedra hexahedra, else the map's default (about 2000 hexahedra).
+template <class Traits, class NamedParameters>
+double pipeline_hex_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), 0.);
+  if(h > 0) return h;
+  const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_hexahedra), std::size_t(0)));
+  return std::cbrt(tetrahedral_mesh_volume(mesh) / (n > 0 ? n : 2000.));
+}
+
+// Largest tetrahedron volume for a tetrahedralization at the hex size h: h^3 / 6 (some 30
+// tetrahedra per hexahedron), but never more than 2e6 tetrahedra; 0 (no bound) for an invalid h.
+inline double hex_size_tetrahedron_volume(double volume, double h)
+{
+  if(!(h > 0) || !std::isfinite(h) || !(volume > 0)) return 0;
+  return (std::max)(h * h * h / 6, volume / 2e6);
 }
 
 template <class Traits>
@@ -123,8 +149,29 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
   visitor.end_stage("check", r.check_seconds);
 
   const std::size_t missing = r.extraction.incomplete_cells + r.extraction.untraced_corners;
-  if(r.check.valid && missing == 0) {
+  // Cells dropped inside a fold of the map leave a closed cavity: a valid-looking mesh whose boundary
+  // has more components (or another genus) than the solid's.
+  const bool same_topology = r.check.boundary_components == mesh.number_of_boundary_components() &&
+                             r.check.boundary_euler_characteristic == mesh.boundary_euler_characteristic();
+  // A slit along a seam (cells on both sides, no cell across) keeps the topology but puts boundary
+  // quads deep inside the solid: the boundary is then far from the input's.
+  const bool follows_boundary = !(r.relative_hausdorff_distance > maximum_relative_hausdorff_distance);
+  if(r.check.valid && missing == 0 && same_topology && follows_boundary) {
     r.status = Hexahedral_remeshing_status::OK;
+  } else if(r.check.valid && missing == 0 && same_topology) {
+    r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
+    std::ostringstream os;
+    os << "the boundary of the hex mesh is " << r.relative_hausdorff_distance
+       << " of the diagonal away from the solid's (at most " << maximum_relative_hausdorff_distance
+       << "): boundary quads inside the solid where the integer-grid map is " << status_name(r.map.status);
+    r.message = os.str();
+  } else if(r.check.valid && missing == 0) {
+    r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
+    r.message = "the boundary of the hex mesh has " + std::to_string(r.check.boundary_components) +
+                " components and Euler characteristic " + std::to_string(r.check.boundary_euler_characteristic) +
+                ", the solid's " + std::to_string(mesh.number_of_boundary_components()) + " and " +
+                std::to_string(mesh.boundary_euler_characteristic()) + " (cells missing where the integer-grid map is " +
+                status_name(r.map.status) + ")";
   } else {
     r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
     r.message = std::to_string(r.check.inverted_hexahedra) + " inverted hexahedra (min scaled Jacobian " +
