@@ -142,6 +142,66 @@ TEST(HexahedralRemeshing, SurfaceMeshInLinearCellComplexOut)
   EXPECT_TRUE(lcc.is_valid());
 }
 
+TEST(HexahedralRemeshing, CylinderSurfaceAtTheHexSizeHasFourValenceThreeChains)
+{
+  // The shipped cylinder (radius 1, axis z from 0 to 2) from its surface alone: the call
+  // tetrahedralizes it at the hex size. A hex mesh of a cylinder from a smooth field has four
+  // valence-3 chains parallel to the axis (the square core of an O-grid has four corners).
+  CGAL::Surface_mesh<K::Point_3> surface;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(example_data + "/cylinder.off", surface));
+  HR::Hexahedral_mesh_3 hexes;
+  const HR::Hexahedral_remeshing_result r =
+    CGAL::hexahedral_remeshing(surface, hexes, HR::parameters::number_of_hexahedra(std::size_t(500)));
+  ASSERT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  EXPECT_GT(r.tetrahedra, 5000u); // at the hex size, not the 854 tetrahedra of the surface alone
+  EXPECT_EQ(r.frame_field.singularities.number_of_curves(3), 4u);
+  EXPECT_EQ(r.frame_field.singularities.number_of_curves(5), 0u);
+
+  const Cell_check c = check_cells(hexes);
+  EXPECT_EQ(c.non_positive_corners, 0u);
+  EXPECT_EQ(c.bad_quads, 0u);
+  EXPECT_GT(hexes.number_of_hexahedra(), 250u); // about 500: the size is cbrt(volume / 500), the count follows the rounding
+  EXPECT_LT(hexes.number_of_hexahedra(), 700u);
+  EXPECT_NEAR(c.volume, 2 * CGAL_PI, 0.06 * 2 * CGAL_PI);
+
+  // boundary vertices on the cylinder; interior edges by valence, counted from the cells
+  static const int faces[6][4] = { {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7} };
+  static const int edges[12][2] = { {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7} };
+  std::map<std::array<std::uint32_t, 4>, int> quad_count;
+  for(const auto& hex : hexes.hexahedra)
+    for(const auto& f : faces) {
+      std::array<std::uint32_t, 4> k{ {hex[f[0]], hex[f[1]], hex[f[2]], hex[f[3]]} };
+      std::sort(k.begin(), k.end());
+      ++quad_count[k];
+    }
+  std::vector<char> on_boundary(hexes.points.size(), 0);
+  for(const auto& kv : quad_count)
+    if(kv.second == 1) for(std::uint32_t v : kv.first) on_boundary[v] = 1;
+  double worst = 0;
+  for(std::size_t v = 0; v < hexes.points.size(); ++v) {
+    if(!on_boundary[v]) continue;
+    const auto& p = hexes.points[v];
+    const double d = (std::min)({std::abs(std::hypot(p.x(), p.y()) - 1.0), std::abs(p.z()), std::abs(p.z() - 2.0)});
+    worst = (std::max)(worst, d);
+  }
+  EXPECT_LT(worst, 1 - std::cos(CGAL_PI / 32) + 1e-6); // on the 32-gon prism of the file (its sag off the true cylinder)
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_valence;
+  for(const auto& hex : hexes.hexahedra)
+    for(const auto& e : edges) ++edge_valence[std::minmax(hex[e[0]], hex[e[1]])];
+  std::size_t valence3 = 0, other = 0;
+  for(const auto& kv : edge_valence) {
+    if(on_boundary[kv.first.first] && on_boundary[kv.first.second]) continue; // boundary (or chord) edges
+    if(kv.second == 4) continue;
+    if(kv.second != 3) { ++other; continue; }
+    ++valence3;
+    const auto d = hexes.points[kv.first.second] - hexes.points[kv.first.first];
+    EXPECT_GT(std::abs(d.z()), 0.9 * std::sqrt(d.squared_length())) << "a valence-3 edge across the axis";
+  }
+  EXPECT_EQ(other, 0u);
+  EXPECT_GT(valence3, 0u);
+  EXPECT_EQ(valence3 % 4, 0u) << valence3 << " valence-3 edges: not four chains through every layer";
+}
+
 TEST(HexahedralRemeshing, WithoutSmoothingTheHexahedraAreTheIntegerCells)
 {
   const Mesh m = load(example_data + "/cube.off", 0.002);

@@ -29,6 +29,20 @@
 namespace CGAL {
 namespace Hexahedral_remeshing {
 
+namespace internal_np {
+enum keep_folded_cells_t { keep_folded_cells };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// Hex extraction: keep the complete cells next to inverted tetrahedra that have a corner inverted in
+/// space, for a mesh that is untangled next (`bool`, default `false`).
+template <class T> unspecified_type keep_folded_cells(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(keep_folded_cells)
+#endif
+} // namespace parameters
+
 /// \ingroup PkgHexahedralRemeshingRef
 /// What an integer-grid map looks like, measured from its parameters alone (`check_integer_grid_map()`).
 /// Faces are given as sorted vertex triples; deviations are in parameter units (hex edges).
@@ -198,7 +212,8 @@ struct Hexahedral_extraction_result
   std::size_t untraced_corners = 0;
   /// Cells left out because a corner was missing or ambiguous.
   std::size_t incomplete_cells = 0;
-  /// Cells next to inverted tetrahedra left out because a corner is inverted in space (folds).
+  /// Cells next to inverted tetrahedra with a corner inverted in space (folds): left out, or kept
+  /// with the named parameter `keep_folded_cells`.
   std::size_t folded_cells = 0;
   /// Hex vertices that belong to no emitted cell (spurious copies in folds), removed from the mesh.
   std::size_t removed_vertices = 0;
@@ -241,7 +256,8 @@ struct Hexahedral_extraction_result
 /// finds its 8 corners. Positions are barycentric interpolations of the tetrahedra's vertex positions.
 ///
 /// Zero-volume tetrahedra are tolerated; where the map is folded (inverted tetrahedra) the cells that
-/// cannot be completed are left out and counted, never emitted broken.
+/// cannot be completed are left out and counted, never emitted broken; complete cells with a corner
+/// inverted in space are left out too, unless `keep_folded_cells` (for a mesh that is untangled next).
 ///
 /// \param map the integer-grid map (parameters in hex edges; `map.source` names it in errors)
 /// \param hexes the output (overwritten): points, hexahedra in VTK order (positively oriented in the
@@ -250,6 +266,13 @@ struct Hexahedral_extraction_result
 ///        (the tetrahedron that owns the cell centre)
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{keep_folded_cells}
+///     \cgalParamDescription{keep the complete cells next to inverted tetrahedra that have a corner
+///       inverted in space (they are counted in `folded_cells` either way); without them a fold leaves
+///       a hole, with them inverted hexahedra that `smooth_hexahedral_mesh()` untangles}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress hooks}
 ///     \cgalParamType{a class with the member functions of `Hexahedral_extraction_visitor`}
@@ -266,6 +289,7 @@ Hexahedral_extraction_result extract_hexahedra(const Integer_grid_map& map, Hexa
                                                const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   using CGAL::parameters::get_parameter_reference;
   namespace ex = internal::extraction;
   Hexahedral_extraction_visitor default_visitor;
@@ -342,7 +366,8 @@ Hexahedral_extraction_result extract_hexahedra(const Integer_grid_map& map, Hexa
   visitor.start_stage("cells");
   hexes.clear();
   ex::Cell_assembly_report cells;
-  ex::assemble_hex_cells(map, topo, sm, tr, lp, hexes.hexahedra, hexes.hexahedron_source_tetrahedra, cells);
+  ex::assemble_hex_cells(map, topo, sm, tr, lp, hexes.hexahedra, hexes.hexahedron_source_tetrahedra, cells,
+                         choose_parameter(get_parameter(np, internal_np::keep_folded_cells), false));
   {
     // keep only the vertices of the emitted cells (none is dropped on a valid map)
     std::vector<std::uint32_t> new_id(lp.positions.size(), ex::no_tetrahedron);

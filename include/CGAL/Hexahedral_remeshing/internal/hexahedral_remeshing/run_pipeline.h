@@ -105,7 +105,10 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
     r.map = compute_integer_grid_map(mesh, r.frame_field.frames, r.frame_field.matchings, r.frame_field.singularities,
                                      map, np);
   r.map_check = check_integer_grid_map(map);
-  r.extraction = extract_hexahedra(map, hexes, np);
+  // the smoothing untangles: a folded cell kept is repaired there, one left out would be a hole
+  const bool smoothing = choose_parameter(get_parameter(np, internal_np::hexahedral_smoothing), true);
+  r.extraction = extract_hexahedra(
+    map, hexes, parameters::keep_folded_cells(choose_parameter(get_parameter(np, internal_np::keep_folded_cells), smoothing), np));
   if(hexes.number_of_hexahedra() == 0) {
     r.status = Hexahedral_remeshing_status::NO_HEXAHEDRA;
     r.message = std::string("the integer-grid map (status ") + status_name(r.map.status) +
