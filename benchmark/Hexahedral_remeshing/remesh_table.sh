@@ -45,9 +45,10 @@ if not os.path.exists(path):
     sys.exit(0)
 r = json.load(open(path))
 h, f, s = r['hex_mesh'], r['features'], r['seconds']
-print('%-28s %-10s %8d %7d %-17s %6.3f %6.3f %9.2e %6.3f %9s %8.2f %8.2f %8.2f %8.2f %7.0f' % (
+hd = f['relative_hausdorff_distance']  # null without a smoothed mesh
+print('%-28s %-10s %8d %7d %-17s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.2f %8.2f %8.2f %7.0f' % (
     name, mode, r['tetrahedra'], h['hexahedra'], r['status'], h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
-    f['relative_hausdorff_distance'], f['coverage'],
+    '-' if hd is None else '%.2e' % hd, f['coverage'],
     '%d/%d' % (f['hex_feature_edges_with_prescribed_valence'], f['hex_feature_edges']),
     s['frame_field'], s['map'], s['extraction'], s['smoothing'], peak))
 PY
