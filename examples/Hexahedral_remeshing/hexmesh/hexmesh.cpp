@@ -67,6 +67,8 @@ const char* usage =
   "                            comparison). --valences-out: the prescribed valences as 'a b k' (edit\n"
   "                            and give back with --valences). If the hex mesh is not valid (or empty) the command\n"
   "                            exits 4 with the reason and writes no hex mesh, unless --keep-partial.\n"
+  "                            A surface or CAD input is tetrahedralized at the hex size unless\n"
+  "                            --max-volume or --mesh-size is given (a tet mesh is used as given).\n"
   "  parametrize IN --hexex OUT.hexex [--vtk OUT.vtk] [--json FILE] [--valences-out FILE]\n"
   "         [--target-edge-length H] [--heuristic NAME] [--valences FILE] [--baseline]\n"
   "         [--no-chord-split] [--keep-partial] [--threads N] [--quiet]\n"
