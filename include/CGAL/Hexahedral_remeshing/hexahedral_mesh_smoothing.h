@@ -268,19 +268,27 @@ inline void project_on_reference(std::vector<Hexahedral_mesh_3::Point_3>& points
 ///
 /// Method. The elements are the 8 corner tetrahedra of each hexahedron (corner `i` and its three
 /// neighbours, VTK order), with the ideal element the corner of a cube of the hexahedron's mean edge
-/// length. (1) If a hexahedron has a scaled Jacobian <= 0, the foldover-free energy of Garanzha,
-/// Kaporin, Kudryavtseva, Protais, Ray and Sokolov ("Foldover-free maps in 50 lines of code", ACM TOG
-/// 2021) is minimized over the interior vertices with the boundary fixed. (2) Quality rounds: the same
-/// energy (a barrier once the mesh is valid) over the interior vertices and the boundary vertices
-/// sliding in their tangent plane / along their curve tangent, then projection of the boundary
-/// vertices onto the surface (closest point, CGAL AABB tree) and of the feature vertices onto their
-/// polyline. Which vertex lies on what comes from `hexes.vertex_tags` when it has full size, otherwise
-/// from the boundary quads and the distance to the corners and polylines (below 1e-3 of the vertex's
-/// shortest hex edge).
-/// The returned state is the best of the untangled state and the round states among those whose
+/// length, and the energy is the foldover-free energy of Garanzha, Kaporin, Kudryavtseva, Protais, Ray
+/// and Sokolov ("Foldover-free maps in 50 lines of code", ACM TOG 2021). Constrained vertices are first
+/// put on the reference: boundary vertices on the surface (closest point, CGAL AABB tree, on their own
+/// patch between sharp edges), feature vertices on their polyline, corners fixed. (1) Untangling, if a
+/// hexahedron has a scaled Jacobian <= 0: local sweeps from the vertices of those hexahedra (each
+/// vertex moved alone, a move accepted if it lowers the energy of its star without lowering the star's
+/// minimum scaled Jacobian nor adding a non-positive hexahedron), then, if some remain inverted, the
+/// global minimization of the energy over the interior vertices with the boundary fixed (LBFGS++,
+/// stopped as soon as nothing is inverted). (2) Up to `number_of_iterations` quality sweeps: every
+/// vertex in turn takes a damped Newton step of its star's energy (boundary vertices in their tangent
+/// plane, feature vertices along their curve, then projected back), accepted only if no hexahedron of
+/// the star gets a lower scaled Jacobian than the star's minimum; then the worst hexahedra have their
+/// minimum raised directly. The sweeps stop when nothing moves or a sweep gains almost nothing.
+/// Which vertex lies on what comes from `hexes.vertex_tags` when it has full size, otherwise from the
+/// boundary quads and the distance to the corners and polylines (below 1e-3 of the vertex's shortest
+/// hex edge); a reference without feature curves gets its sharp edges (`smoothing_sharp_angle`) as
+/// feature curves.
+/// The returned state is the best of the untangled state and the sweep states among those whose
 /// minimum scaled Jacobian is not lower than the input's (fewest hexahedra with scaled Jacobian
-/// <= 0, then constrained vertices on the reference, then highest mean scaled Jacobian); the input is
-/// kept when no state qualifies, so the minimum scaled Jacobian never decreases.
+/// <= 0, then constrained vertices on the reference, then highest minimum, then highest mean scaled
+/// Jacobian); the input is kept when no state qualifies, so the minimum scaled Jacobian never decreases.
 ///
 /// Only `hexes.points` changes. Library code, never prints.
 ///
