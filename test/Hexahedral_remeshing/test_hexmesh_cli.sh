@@ -33,6 +33,9 @@ grep -q "k = 0 (phi < 45, not meshable): 8" "$tmp/out" || fail "info output lack
 "$hexmesh" --help | grep -q "usage: hexmesh" || fail "--help"
 
 expect_error 3 "does_not_exist.vtk: cannot open file" info "$tmp/does_not_exist.vtk"
+mkdir -p "$tmp/a_directory.vtk" "$tmp/a_directory.off"
+expect_error 3 "a_directory.vtk: is a directory, not a file" info "$tmp/a_directory.vtk"
+expect_error 3 "a_directory.off: is a directory, not a file" info "$tmp/a_directory.off"
 expect_error 3 "malformed_number.vtk:7: malformed number" info "$broken/malformed_number.vtk"
 expect_error 3 "degenerate (zero volume)" info "$broken/degenerate_tetrahedron.vtk"
 expect_error 3 "binary.vtk:5: POINTS: the binary block of 15 values of type double is truncated" info "$broken/binary.vtk"

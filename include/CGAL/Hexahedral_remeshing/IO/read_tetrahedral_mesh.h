@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -198,6 +199,9 @@ void read_tetrahedral_soup(const std::string& filename, Tetrahedral_soup_3<Point
                            const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string ext = file_extension(filename);
+  // a directory opens as a stream that reads nothing: it would be reported as an empty file
+  std::error_code ec;
+  if(std::filesystem::is_directory(filename, ec)) throw Input_error(filename, 0, "is a directory, not a file");
   if(ext == "vtk") {
     read_VTK(Hexahedral_remeshing::internal::Text_tokenizer::read_file(filename), filename, soup);
   } else if(ext == "mesh") {

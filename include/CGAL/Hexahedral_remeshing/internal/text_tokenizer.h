@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -27,6 +28,8 @@ public:
 
   static std::string read_file(const std::string& filename)
   {
+    std::error_code ec;
+    if(std::filesystem::is_directory(filename, ec)) throw Input_error(filename, 0, "is a directory, not a file");
     std::ifstream in(filename, std::ios::binary);
     if(!in) throw Input_error(filename, 0, "cannot open file for reading");
     std::ostringstream ss;
