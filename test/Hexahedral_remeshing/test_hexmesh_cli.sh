@@ -224,6 +224,13 @@ for k in ('frame_field', 'integer_grid_map', 'extraction', 'smoothing', 'hex_mes
 expect_error 2 "either --target-edge-length or --hexahedra" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --hexahedra 8 --target-edge-length 0.5
 expect_error 2 "expects a positive length" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --target-edge-length -1
 [ -z "$(ls -A "$tmp/x")" ] || fail "failed remesh runs left files behind: $(ls "$tmp/x")"
+# a surface without --max-volume is tetrahedralized at the hex size; --valences-out of that run read back
+"$hexmesh" remesh "$data/cube.off" --hexahedra 64 --quiet --out "$tmp/cube64a.mesh" --valences-out "$tmp/cube64.txt" \
+  || fail "remesh at the hex size exit code $?"
+"$hexmesh" remesh "$data/cube.off" --hexahedra 64 --out "$tmp/cube64b.mesh" --valences "$tmp/cube64.txt" > "$tmp/out" 2> "$tmp/err" \
+  || fail "remesh with the valences of the same run: exit $?: $(cat "$tmp/err")"
+grep -q "tetrahedra -> 64 hexahedra (OK)" "$tmp/out" || fail "remesh at the hex size: $(head -1 "$tmp/out")"
+cmp -s "$tmp/cube64a.mesh" "$tmp/cube64b.mesh" || fail "the valences written by remesh do not give the same mesh back"
 
 # Inputs (issue 13): a CAD part and gmsh files, everyday file variants, flawed surfaces and meshes
 inputs="$root/test/Hexahedral_remeshing/data/inputs"

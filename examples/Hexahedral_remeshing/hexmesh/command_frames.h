@@ -88,16 +88,6 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   return o;
 }
 
-// Reads the input (chords split unless --no-chord-split) and the --valences file; returns the seconds.
-inline double read_frame_field_input(const Arguments& args, const std::string& in, Mesh& mesh,
-                                     std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress)
-{
-  progress.start("reading " + in);
-  read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
-  if(args.has("valences")) prescribed = CGAL::Hexahedral_remeshing::IO::read_edge_valences(args.value("valences"), mesh);
-  return progress.finish();
-}
-
 // Surfaces and CAD parts are tetrahedralized again at the hex size unless --max-volume or --mesh-size
 // say otherwise: TetGen at most h^3/6 per tetrahedron, gmsh an edge length of 0.6 h (both some 30
 // tetrahedra per hexahedron). A field on tetrahedra coarser than the hexahedra places its singular
@@ -126,6 +116,28 @@ inline void tetrahedralize_for_hex_size(const Arguments& args, const std::string
   read_input_mesh(sized, in, fine, !args.has("no-chord-split"));
   if(fine.number_of_tetrahedra() > mesh.number_of_tetrahedra()) mesh = std::move(fine);
   progress.finish();
+}
+
+// The size of the hexahedra a command will make, for tetrahedralize_for_hex_size().
+struct Hex_size
+{
+  double target = 0;
+  std::size_t hexahedra = 0;
+};
+
+// Reads the input (chords split unless --no-chord-split), tetrahedralized at `size` if given (a surface or
+// a CAD part), then the --valences file, whose vertex indices are those of that final mesh; returns the seconds.
+inline double read_frame_field_input(const Arguments& args, const std::string& in, Mesh& mesh,
+                                     std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress,
+                                     const Hex_size* size = nullptr)
+{
+  progress.start("reading " + in);
+  read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
+  double seconds = progress.finish();
+  const auto start = std::chrono::steady_clock::now();
+  if(size != nullptr) tetrahedralize_for_hex_size(args, in, mesh, size->target, size->hexahedra, progress);
+  if(args.has("valences")) prescribed = CGAL::Hexahedral_remeshing::IO::read_edge_valences(args.value("valences"), mesh);
+  return seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Runs the frame-field pipeline with progress; an impossible prescription stays an Input_error (exit 3),

@@ -140,12 +140,8 @@ inline int command_parametrize(const Arguments& args)
   Progress progress(options.quiet);
   Mesh mesh;
   std::vector<std::pair<Index, int> > prescribed;
-  double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
-  {
-    const auto start = std::chrono::steady_clock::now();
-    tetrahedralize_for_hex_size(args, in, mesh, target, 0, progress);
-    read_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
+  const Hex_size size{target, 0};
+  const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress, &size);
   const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress);
   HR::Integer_grid_map map;
   const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress);

@@ -56,12 +56,8 @@ inline int command_remesh(const Arguments& args)
   Progress progress(options.quiet);
   Mesh mesh;
   std::vector<std::pair<Index, int> > prescribed;
-  double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress);
-  {
-    const auto start = std::chrono::steady_clock::now();
-    tetrahedralize_for_hex_size(args, in, mesh, target, hexahedra, progress);
-    read_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
+  const Hex_size size{target, hexahedra};
+  const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress, &size);
 
   Frames_progress_visitor visitor(progress);
   HR::Hexahedral_mesh_3 hexes;
