@@ -103,7 +103,9 @@ inline void tetrahedralize_for_hex_size(const Arguments& args, const std::string
   const bool cad = ext == "step" || ext == "stp" || ext == "brep" || ext == "iges" || ext == "igs";
   if((!surface && !cad) || args.has("max-volume") || args.has("mesh-size")) return;
   const double volume = HR::internal::tetrahedral_mesh_volume(mesh);
-  const double h = target > 0 ? target : std::cbrt(volume / double(hexahedra > 0 ? hexahedra : 2000));
+  namespace HP = CGAL::Hexahedral_remeshing::parameters;
+  // the size the pipeline will use (0 means not given)
+  const double h = HR::internal::pipeline_hex_edge_length(mesh, HP::target_edge_length(target, HP::number_of_hexahedra(hexahedra)));
   const double max_volume = HR::internal::hex_size_tetrahedron_volume(volume, h);
   if(!(max_volume > 0)) return;
   Arguments sized = args;
