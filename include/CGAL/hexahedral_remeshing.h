@@ -91,6 +91,13 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///        `smoothing_sharp_angle`, with its defaults), of `tetrahedralize_surface()` for a surface
 ///        input, and:
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{acute_edge_band_radius}
+///     \cgalParamDescription{radius of the band of fixed frames around the acute edges of valence 1
+///       (see `compute_frame_field_pipeline()`), in model units; 0 disables it, a negative value
+///       means the default}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{twice the hex edge length}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{target_edge_length}
 ///     \cgalParamDescription{hex edge length in model units}
 ///     \cgalParamType{`double`}

@@ -203,3 +203,43 @@ TEST(FrameField, BadInputsAreRejected)
   if(unsplit.number_of_split_tetrahedra() == 0 && unsplit.number_of_tetrahedra() == m.number_of_tetrahedra()) return;
   EXPECT_THROW(HR::compute_frame_field(unsplit, HR::boundary_triangle_unit_normals(unsplit), frames), HR::Error);
 }
+
+// fixed_frames: the given tetrahedra keep their frames exactly, the constrained ones stay on their
+// directions, the reported energy is that of the returned field, and bad frames are refused.
+TEST(FrameField, FixedFramesAreKept)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.004);
+  const auto normals = HR::boundary_triangle_unit_normals(m);
+  std::vector<bool> on_boundary(m.number_of_tetrahedra(), false);
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b) on_boundary[m.boundary_triangle_tetrahedron(b)] = true;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.35, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  std::vector<std::pair<std::size_t, Eigen::Matrix3d> > fixed;
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    const auto& tv = m.tetrahedron_vertices(t);
+    if(!on_boundary[t] && CGAL::to_double(m.point(tv[0]).z()) > 1.2) fixed.emplace_back(t, R);
+  }
+  ASSERT_GT(fixed.size(), 20u);
+  std::vector<Eigen::Matrix3d> free_frames, frames;
+  const HR::Frame_field_result free_field = HR::compute_frame_field(m, normals, free_frames);
+  const HR::Frame_field_result r = HR::compute_frame_field(m, normals, frames, HR::parameters::fixed_frames(fixed));
+  for(const auto& f : fixed) ASSERT_TRUE(frames[f.first] == f.second) << "tetrahedron " << f.first;
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b)
+    ASSERT_NEAR((frames[m.boundary_triangle_tetrahedron(b)].transpose() * normals[b]).cwiseAbs().maxCoeff(), 1.0, 1e-9);
+  // a field forced away from its optimum costs energy
+  EXPECT_GT(r.energy, free_field.energy);
+  auto p = HR::internal::make_frame_field_problem(m, normals, HR::internal::Face_weighting::AREA_OVER_DISTANCE, fixed);
+  EXPECT_NEAR(HR::internal::frame_field_energy(p, frames), r.energy, 1e-9 * r.energy);
+
+  auto bad = fixed;
+  bad.front().second(0, 0) += 0.1; // not a rotation
+  EXPECT_THROW(HR::compute_frame_field(m, normals, frames, HR::parameters::fixed_frames(bad)), HR::Error);
+  bad = fixed;
+  bad.emplace_back(m.number_of_tetrahedra(), R); // no such tetrahedron
+  EXPECT_THROW(HR::compute_frame_field(m, normals, frames, HR::parameters::fixed_frames(bad)), HR::Error);
+  bad = fixed;
+  const Index b0 = 0;
+  const Eigen::Matrix3d off = Eigen::AngleAxisd(0.3, normals[b0].unitOrthogonal()).toRotationMatrix() *
+                              HR::internal::minimal_rotation_to(normals[b0]);
+  bad.emplace_back(m.boundary_triangle_tetrahedron(b0), off); // leaves its boundary direction
+  EXPECT_THROW(HR::compute_frame_field(m, normals, frames, HR::parameters::fixed_frames(bad)), HR::Error);
+}

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 
 namespace HR = CGAL::Hexahedral_remeshing;
 typedef HR::Tetrahedral_mesh_3<> Mesh;
@@ -208,4 +209,49 @@ TEST(Pipeline, EverySharedModel)
                 r.singularities.number_of_curves(5), r.singularities.improper_edges, r.boundary_valences.matched,
                 r.boundary_valences.total, r.realignment.changed_matchings, r.realignment.changed_edges, r.seconds);
   }
+}
+
+// The band of fixed frames along the 10-degree edge: without it the field's valence-3 curve runs
+// through the vertices of the edge (the known failure of the map); with it no curve vertex is on
+// the edge, the band's frames are the returned ones, and every boundary valence stays as prescribed.
+TEST(Pipeline, AcuteEdgeBandKeepsTheCurveOffTheEdge)
+{
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  std::set<Index> acute_vertices;
+  for(Index e : m.boundary_edges())
+    if(HR::boundary_edge_dihedral_class(m, e) == 0)
+      for(Index v : m.edge_vertices(e)) acute_vertices.insert(v);
+  ASSERT_GE(acute_vertices.size(), 9u);
+  auto on_acute_edge = [&](Index v) { return acute_vertices.count(v) > 0; };
+  auto curve_vertices_on_edge = [&](const HR::Frame_field_pipeline_result& r) {
+    std::size_t n = 0;
+    for(const auto& c : r.singularities.curves)
+      for(Index v : c.vertices) n += on_acute_edge(v);
+    return n;
+  };
+  const auto without = HR::compute_frame_field_pipeline(m, HR::parameters::realignment(false));
+  EXPECT_TRUE(without.fixed_frames.empty());
+  EXPECT_GT(curve_vertices_on_edge(without), 2u);
+
+  const auto r = HR::compute_frame_field_pipeline(m, HR::parameters::acute_edge_band_radius(0.07, HR::parameters::realignment(false)));
+  ASSERT_EQ(r.singularities.number_of_curves(3), 1u);
+  EXPECT_EQ(curve_vertices_on_edge(r), 0u);
+  ASSERT_FALSE(r.fixed_frames.empty());
+  EXPECT_GT(r.redirected_directions, 0u);
+  for(const auto& f : r.fixed_frames) ASSERT_TRUE(r.frames[f.first] == f.second);
+  // every tetrahedron with a vertex on the edge is in the band
+  std::size_t touching = 0;
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    bool touches = false;
+    for(Index v : m.tetrahedron_vertices(t)) touches = touches || on_acute_edge(v);
+    touching += touches;
+  }
+  EXPECT_GE(r.fixed_frames.size(), touching);
+  EXPECT_LT(r.constraints.final_energy, CGAL_PI / 4);
+  EXPECT_EQ(r.boundary_valences.mismatched, 0u);
+  for(Index e : m.boundary_edges())
+    if(HR::boundary_edge_dihedral_class(m, e) == 0) EXPECT_EQ(r.boundary_valences.achieved[e], 1);
+
+  EXPECT_THROW(HR::compute_frame_field_pipeline(m, HR::parameters::acute_edge_band_radius(-1.0)), HR::Input_error);
+  EXPECT_THROW(HR::compute_frame_field_pipeline(m, HR::parameters::acute_edge_band_radius(std::nan(""))), HR::Input_error);
 }

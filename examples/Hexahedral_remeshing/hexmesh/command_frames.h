@@ -250,6 +250,8 @@ inline int command_frames(const Arguments& args)
         .value("relaxation_residual", r.frame_field.relaxation_residual)
         .value("smoothing_iterations", r.frame_field.smoothing_iterations)
         .value("under_resolved_faces", r.matchings.under_resolved_faces)
+        .value("fixed_frames", r.fixed_frames.size())
+        .value("redirected_directions", r.redirected_directions)
         .value("seconds", r.frame_field.seconds)
         .end();
     json.begin("singularities")
@@ -318,7 +320,10 @@ inline int command_frames(const Arguments& args)
               << " deg), " << r.constraints.failed_faces.size() << " triangles with E_i >= pi/4\n"
               << std::setprecision(4)
               << "  frame field         energy " << r.frame_field.energy << " (" << r.frame_field.initial_energy
-              << " after the relaxation), " << r.frame_field.smoothing_iterations << " L-BFGS iterations\n"
+              << " after the relaxation), " << r.frame_field.smoothing_iterations << " L-BFGS iterations"
+              << (r.fixed_frames.empty() ? std::string() : ", " + std::to_string(r.fixed_frames.size()) +
+                                                              " frames fixed at acute valence-1 edges")
+              << "\n"
               << "  singular curves     " << g.number_of_curves(3) << " of valence 3 (" << curve_edges(3) << " edges), "
               << g.number_of_curves(5) << " of valence 5 (" << curve_edges(5) << " edges), " << g.number_of_curves(0)
               << " improper (" << g.improper_edges << " edges); " << g.dangling_vertices.size() << " dangling ends, "

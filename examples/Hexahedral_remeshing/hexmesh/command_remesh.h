@@ -110,6 +110,8 @@ inline int command_remesh(const Arguments& args)
         .value("improper_edges", f.singularities.improper_edges)
         .value("boundary_valences_total", f.boundary_valences.total)
         .value("boundary_valences_matched", f.boundary_valences.matched)
+        .value("fixed_frames", f.fixed_frames.size())
+        .value("redirected_directions", f.redirected_directions)
         .end();
     add_integer_grid_map(json, r.map, r.map_check);
     json.begin("extraction")
@@ -158,7 +160,11 @@ inline int command_remesh(const Arguments& args)
               << "  frame field         " << f.singularities.number_of_curves(3) << " valence-3 and "
               << f.singularities.number_of_curves(5) << " valence-5 singular curves, " << f.singularities.improper_edges
               << " improper edges; boundary valences of the field " << f.boundary_valences.matched << "/"
-              << f.boundary_valences.total << " as prescribed\n";
+              << f.boundary_valences.total << " as prescribed"
+              << (f.fixed_frames.empty() ? std::string()
+                                         : "; " + std::to_string(f.fixed_frames.size()) +
+                                             " frames fixed around acute valence-1 edges")
+              << "\n";
     print_integer_grid_map(std::cout, r.map, r.map_check);
     if(hexes.number_of_hexahedra() > 0) {
       print_hexahedral_mesh_check(std::cout, r.check);

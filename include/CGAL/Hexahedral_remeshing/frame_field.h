@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -109,14 +110,23 @@ struct Frame_field_result
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`1e-6`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{fixed_frames}
+///     \cgalParamDescription{tetrahedra whose frame is given and kept: no unknown in the relaxation
+///       nor in the smoothing. A tetrahedron with a boundary face must have an axis on its boundary
+///       direction. The pipeline uses it near acute edges of valence 1 (see
+///       `compute_frame_field_pipeline()`)}
+///     \cgalParamType{`std::vector<std::pair<std::size_t, Eigen::Matrix3d> >`, (tetrahedron, rotation) pairs}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress callbacks}
 ///     \cgalParamType{a class with the member functions of `Frame_field_visitor`}
 ///     \cgalParamDefault{`Frame_field_visitor()`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \throws Error if the directions do not match the boundary triangles or a tetrahedron has two
-///         boundary faces.
+/// \throws Error if the directions do not match the boundary triangles, a tetrahedron has two
+///         boundary faces, or a fixed frame is not a rotation, names no tetrahedron of the mesh, or
+///         leaves its boundary direction.
 template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
                                        const std::vector<Eigen::Vector3d>& boundary_directions,
@@ -133,6 +143,10 @@ Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
   const double cg_tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-6);
   Frame_field_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  const std::vector<std::pair<std::size_t, Eigen::Matrix3d> > no_fixed_frames;
+  // a copy: a parameter passed by value comes back from get_parameter_reference() as a temporary
+  const std::vector<std::pair<std::size_t, Eigen::Matrix3d> > fixed =
+    choose_parameter(get_parameter(np, internal_np::fixed_frames), no_fixed_frames);
 
   typedef std::chrono::steady_clock Clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -143,7 +157,8 @@ Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
   auto t = Clock::now();
   const internal::Frame_field_problem problem = internal::make_frame_field_problem(
     mesh, boundary_directions,
-    weights == Face_weights::UNIFORM ? internal::Face_weighting::UNIFORM : internal::Face_weighting::AREA_OVER_DISTANCE);
+    weights == Face_weights::UNIFORM ? internal::Face_weighting::UNIFORM : internal::Face_weighting::AREA_OVER_DISTANCE,
+    fixed);
   internal::Frame_field_relaxation relaxation(problem);
   result.setup_seconds = seconds_since(t);
   visitor.end_stage("setup", result.setup_seconds);

@@ -11,6 +11,7 @@
 #include <CGAL/Hexahedral_remeshing/frame_field.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/realign_frame_field.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/acute_edge_frames.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 
 #include <Eigen/Dense>
@@ -25,6 +26,7 @@ namespace Hexahedral_remeshing {
 namespace internal_np {
 enum baseline_t { baseline };
 enum realignment_t { realignment };
+enum acute_edge_band_radius_t { acute_edge_band_radius };
 } // namespace internal_np
 
 namespace parameters {
@@ -34,9 +36,13 @@ namespace parameters {
 template <class T> unspecified_type baseline(const T& value);
 /// Pipeline: realign the field with the normals after the frame field (`bool`, default `true`).
 template <class T> unspecified_type realignment(const T& value);
+/// Pipeline: radius of the band around the acute edges of valence 1 where the frames are held fixed
+/// (`double`, model units, default 0: no band; `hexahedral_remeshing()` uses twice the hex edge length).
+template <class T> unspecified_type acute_edge_band_radius(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(baseline)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(realignment)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(acute_edge_band_radius)
 #endif
 } // namespace parameters
 
@@ -66,6 +72,12 @@ struct Frame_field_pipeline_result
   Boundary_direction_constraints_result constraints;
   /// The frames, one per tetrahedron (realigned unless `realignment(false)` or baseline).
   std::vector<Eigen::Matrix3d> frames;
+  /// The frames held fixed by the solver near acute edges of valence 1, (tetrahedron, rotation)
+  /// pairs sorted by tetrahedron (named parameter `acute_edge_band_radius`).
+  std::vector<std::pair<std::size_t, Eigen::Matrix3d> > fixed_frames;
+  /// Boundary directions turned within 3 band radii of those edges (`constraints` then reports the
+  /// deviation of the turned directions).
+  std::size_t redirected_directions = 0;
   /// Report of the frame-field solver.
   Frame_field_result frame_field;
   /// Matchings of the field of step 2 (kept by the realignment).
@@ -112,6 +124,19 @@ struct Frame_field_pipeline_result
 ///     \cgalParamDescription{realign the field with the normals (paper Sec. 3.3)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{acute_edge_band_radius}
+///     \cgalParamDescription{radius, in model units, of a band around the boundary edges of prescribed
+///       valence 1 whose dihedral angle is below pi/4 (exact class 0), where the frames are held fixed
+///       to the frame of the one hexahedron spanning the wedge (the edge and the directions `v` of its
+///       two triangles); the directions within the radius become axes of that frame and those up to 3
+///       radius turn partly towards them. Without it, the smoothing pulls the singular curve of the
+///       wedge's cross-section onto the edge (a 10-degree wedge: through the edge's vertices at every
+///       tetrahedron size), where no integer-grid map can keep the wedge's faces apart. The band needs
+///       tetrahedra smaller than the wedge is thick at the radius to hold the curve off the faces.
+///       0: no band. No effect on the baseline (it never prescribes valence 1 below pi/4)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress callbacks, for every stage}
@@ -161,7 +186,21 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   r.constraints_seconds = seconds_since(t);
   visitor.end_stage("constraints", r.constraints_seconds);
 
-  r.frame_field = compute_frame_field(mesh, r.directions, r.frames, np);
+  const double band = choose_parameter(get_parameter(np, internal_np::acute_edge_band_radius), 0.);
+  if(!(band >= 0) || !std::isfinite(band))
+    throw Input_error(mesh.source(), 0, "acute_edge_band_radius must be a finite number >= 0, got " + std::to_string(band));
+  if(!r.baseline && band > 0) {
+    r.fixed_frames = internal::acute_edge_band(mesh, r.valences, r.directions, band, r.redirected_directions);
+    if(r.redirected_directions > 0) {
+      // the report describes the directions the field follows
+      r.constraints.final_energy =
+        compute_boundary_direction_deviation(mesh, r.valences, r.directions, r.constraints.face_energies);
+      r.constraints.failed_faces.clear();
+      for(std::uint32_t i = 0; i < r.constraints.face_energies.size(); ++i)
+        if(r.constraints.face_energies[i] >= CGAL_PI / 4) r.constraints.failed_faces.push_back(i);
+    }
+  }
+  r.frame_field = compute_frame_field(mesh, r.directions, r.frames, parameters::fixed_frames(r.fixed_frames, np));
 
   visitor.start_stage("matchings");
   t = Clock::now();

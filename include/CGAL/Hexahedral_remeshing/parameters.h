@@ -28,6 +28,7 @@ enum smoothing_t { smoothing };
 enum maximum_smoothing_iterations_t { maximum_smoothing_iterations };
 enum smoothing_tolerance_t { smoothing_tolerance };
 enum relaxation_tolerance_t { relaxation_tolerance };
+enum fixed_frames_t { fixed_frames };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -74,6 +75,9 @@ template <class T> unspecified_type maximum_smoothing_iterations(const T& value)
 template <class T> unspecified_type smoothing_tolerance(const T& value);
 /// Frame field: relative residual of the relaxation's conjugate gradients (`double`, default 1e-6).
 template <class T> unspecified_type relaxation_tolerance(const T& value);
+/// Frame field: frames held fixed, as (tetrahedron, rotation) pairs
+/// (`std::vector<std::pair<std::size_t, Eigen::Matrix3d> >`, default none).
+template <class T> unspecified_type fixed_frames(const T& value);
 /// Split every interior edge joining two boundary vertices at its midpoint (`bool`, default `false`).
 template <class T> unspecified_type split_boundary_chords(const T& value);
 #else
@@ -83,6 +87,7 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_smoothing_iterations)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(relaxation_tolerance)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(fixed_frames)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(preserve_surface_triangles)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)

@@ -24,6 +24,7 @@ namespace internal {
 // an interior coupling is w I9, so applying the operator costs O(9 #faces), far cheaper than a
 // sparse Cholesky of the 9x-blown-up dual Laplacian (whose fill would be 81 times the scalar one).
 // Jacobi preconditioning is exact on the diagonal blocks (B_t has orthonormal columns).
+// A fixed tet has no unknown: q_t = q(E_t) is all constant part.
 class Frame_field_relaxation
 {
 public:
@@ -34,9 +35,11 @@ public:
     m_offset[0] = 0;
     m_family.resize(nt);
     for(std::size_t t = 0; t < nt; ++t) {
-      const bool c = p.is_constrained(Frame_field_problem::Index(t));
-      m_offset[t + 1] = m_offset[t] + (c ? 2 : 9);
-      if(c) m_family[t] = sh_frame_family(p.direction(Frame_field_problem::Index(t)));
+      const Frame_field_problem::Index ti = Frame_field_problem::Index(t);
+      const bool c = p.is_constrained(ti);
+      m_offset[t + 1] = m_offset[t] + (p.is_fixed(ti) ? 0 : c ? 2 : 9);
+      if(p.is_fixed(ti)) m_family[t].offset = frame_to_sh(p.frame(ti));
+      else if(c) m_family[t] = sh_frame_family(p.direction(ti));
     }
     m_degree.assign(nt, 0.);
     for(std::size_t t = 0; t < nt; ++t)
@@ -55,7 +58,9 @@ public:
 #endif
     for(std::ptrdiff_t ti = 0; ti < std::ptrdiff_t(m_p.number_of_tets); ++ti) {
       const std::size_t t = std::size_t(ti);
-      if(m_p.is_constrained(Frame_field_problem::Index(t))) {
+      if(m_p.is_fixed(Frame_field_problem::Index(t))) {
+        q[t] = with_offset ? m_family[t].offset : Vector9::Zero();
+      } else if(m_p.is_constrained(Frame_field_problem::Index(t))) {
         q[t] = m_family[t].basis * x.segment<2>(Eigen::Index(m_offset[t]));
         if(with_offset) q[t] += m_family[t].offset;
       } else {
@@ -80,6 +85,7 @@ public:
         const std::size_t other = ft[0] == t ? ft[1] : ft[0];
         r += m_p.face_weight[f] * (q[t] - q[other]);
       }
+      if(m_p.is_fixed(Frame_field_problem::Index(t))) continue;
       if(m_p.is_constrained(Frame_field_problem::Index(t)))
         y.segment<2>(Eigen::Index(m_offset[t])) = m_family[t].basis.transpose() * r;
       else
@@ -136,7 +142,9 @@ public:
 #endif
     for(std::ptrdiff_t t = 0; t < nt; ++t) {
       const Frame_field_problem::Index ti = Frame_field_problem::Index(t);
-      if(m_p.is_constrained(ti)) {
+      if(m_p.is_fixed(ti)) {
+        frames[t] = m_p.frame(ti);
+      } else if(m_p.is_constrained(ti)) {
         // (a, b) are the coordinates of q - c on the orthonormal basis B_t
         const Eigen::Vector2d ab = m_family[t].basis.transpose() * (q[t] - m_family[t].offset);
         frames[t] = frame_from_family(m_p.direction(ti), ab[0], ab[1]);

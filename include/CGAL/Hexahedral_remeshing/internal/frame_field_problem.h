@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <utility>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -19,7 +20,8 @@ namespace Hexahedral_remeshing {
 namespace internal {
 
 // The data every frame-field solver shares: the dual graph (interior faces with their two tets and
-// a weight), the per-tet faces for gathers, and the alignment direction of each constrained tet.
+// a weight), the per-tet faces for gathers, the alignment direction of each constrained tet and the
+// frame of each fixed tet (no unknown at all).
 // Gathers per tet (instead of scatters per face) keep parallel loops deterministic.
 struct Frame_field_problem
 {
@@ -32,7 +34,11 @@ struct Frame_field_problem
   std::vector<std::array<Index, 4> > tet_faces;    // interior face slots of each tet (none if boundary)
   std::vector<Index> constrained_direction;        // per tet: index into directions, or none
   std::vector<Eigen::Vector3d> directions;         // unit alignment directions
+  std::vector<Index> fixed_frame;                  // per tet: index into fixed_frames, or none
+  std::vector<Eigen::Matrix3d> fixed_frames;
 
+  bool is_fixed(Index t) const { return fixed_frame[t] != none; }
+  const Eigen::Matrix3d& frame(Index t) const { return fixed_frames[fixed_frame[t]]; }
   bool is_constrained(Index t) const { return constrained_direction[t] != none; }
   const Eigen::Vector3d& direction(Index t) const { return directions[constrained_direction[t]]; }
 };
@@ -68,7 +74,8 @@ inline void normalize_mean(std::vector<double>& weights)
 template <class Traits>
 Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& mesh,
                                              const std::vector<Eigen::Vector3d>& boundary_directions,
-                                             Face_weighting weighting)
+                                             Face_weighting weighting,
+                                             const std::vector<std::pair<std::size_t, Eigen::Matrix3d> >& fixed = {})
 {
   typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
   Frame_field_problem p;
@@ -102,6 +109,24 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     p.face_weight.push_back(weighting == Face_weighting::AREA_OVER_DISTANCE ? area_over_distance(mesh, f) : 1.0);
   }
   if(weighting == Face_weighting::AREA_OVER_DISTANCE) normalize_mean(p.face_weight);
+  p.fixed_frame.assign(nt, Frame_field_problem::none);
+  for(const auto& tf : fixed) {
+    if(tf.first >= nt) throw Error("frame field: fixed frame given for tetrahedron " + std::to_string(tf.first) +
+                                   " of a mesh with " + std::to_string(nt));
+    const Eigen::Matrix3d& E = tf.second;
+    if(!E.allFinite() || (E.transpose() * E - Eigen::Matrix3d::Identity()).norm() > 1e-6 || E.determinant() < 0)
+      throw Error("frame field: the fixed frame of tetrahedron " + std::to_string(tf.first) + " is not a rotation");
+    if(p.fixed_frame[tf.first] != Frame_field_problem::none)
+      throw Error("frame field: tetrahedron " + std::to_string(tf.first) + " has several fixed frames");
+    if(p.constrained_direction[tf.first] != Frame_field_problem::none) {
+      const Eigen::Vector3d c = E.transpose() * p.directions[p.constrained_direction[tf.first]];
+      if(c.cwiseAbs().maxCoeff() < 1 - 1e-9)
+        throw Error("frame field: the fixed frame of boundary tetrahedron " + std::to_string(tf.first) +
+                    " has no axis on its boundary direction");
+    }
+    p.fixed_frame[tf.first] = Index(p.fixed_frames.size());
+    p.fixed_frames.push_back(E);
+  }
   for(Index t = 0; t < nt; ++t)
     for(int i = 0; i < 4; ++i) p.tet_faces[t][i] = interior_index[mesh.tetrahedron_face(t, i)];
   return p;

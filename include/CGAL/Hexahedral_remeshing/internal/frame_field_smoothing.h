@@ -40,7 +40,8 @@ inline double frame_field_energy(const Frame_field_problem& p, const std::vector
 
 // Non-linear smoothing of Ray et al. 2016 (design 1.7), per tet, with L-BFGS (LBFGS++) on rotation
 // parameters re-centred at the current frames: 3 angles (Rz Ry Rx R0) for a free tet, 1 angle about
-// the alignment direction for a constrained tet, so the constraint holds exactly throughout.
+// the alignment direction for a constrained tet, none for a fixed tet, so the constraints hold
+// exactly throughout.
 class Frame_field_smoother
 {
 public:
@@ -50,7 +51,8 @@ public:
     m_offset.resize(p.number_of_tets + 1);
     m_offset[0] = 0;
     for(std::size_t t = 0; t < p.number_of_tets; ++t)
-      m_offset[t + 1] = m_offset[t] + (p.is_constrained(Frame_field_problem::Index(t)) ? 1 : 3);
+      m_offset[t + 1] = m_offset[t] + (p.is_fixed(Frame_field_problem::Index(t)) ? 0 :
+                                       p.is_constrained(Frame_field_problem::Index(t)) ? 1 : 3);
     m_face_energy.resize(p.face_tets.size());
     m_face_torque.resize(p.face_tets.size());
   }
@@ -66,7 +68,9 @@ public:
 #endif
     for(std::ptrdiff_t t = 0; t < nt; ++t) {
       const std::size_t o = m_offset[t];
-      if(m_p.is_constrained(Frame_field_problem::Index(t))) {
+      if(m_p.is_fixed(Frame_field_problem::Index(t))) {
+        m_frames[t] = m_base[t];
+      } else if(m_p.is_constrained(Frame_field_problem::Index(t))) {
         m_frames[t] = Eigen::AngleAxisd(x[Eigen::Index(o)], m_p.direction(Frame_field_problem::Index(t))).toRotationMatrix() * m_base[t];
       } else {
         // Rz(gamma) Ry(beta) Rx(alpha), written out
@@ -119,6 +123,7 @@ public:
         else tau += m_face_torque[f];
       }
       const std::size_t o = m_offset[t];
+      if(m_p.is_fixed(Frame_field_problem::Index(t))) continue;
       if(m_p.is_constrained(Frame_field_problem::Index(t))) {
         grad[Eigen::Index(o)] = tau.dot(m_p.direction(Frame_field_problem::Index(t)));
       } else {

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# End to end on the shipped 10-degree wedge (issue 11): `hexmesh remesh` on the graded tetrahedra must
+# give a valid hex mesh (exit 0), which check_hex_mesh.py checks again independently of the package
+# (corner orientations, conformity, closed boundary), and the 10-degree edge (the x axis) must be covered
+# by hex edges of valence 1, counted here from the output's hexahedra.
+#   test_remesh_acute_wedge.sh HEXMESH SOURCE_DIR
+set -uo pipefail
+hexmesh="$1"; root="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+export OMP_WAIT_POLICY=PASSIVE
+"$hexmesh" remesh "$root/examples/Hexahedral_remeshing/data/n13c_acute_wedge_graded.msh" --quiet \
+  --out "$tmp/wedge.mesh" > "$tmp/out" 2> "$tmp/err"
+rc=$?
+if [ "$rc" -ne 0 ]; then echo "FAIL: hexmesh remesh exit $rc: $(tail -1 "$tmp/err")"; exit 1; fi
+python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/wedge.mesh" || exit 1
+python3 - "$tmp/wedge.mesh" <<'PY'
+import sys
+tokens = open(sys.argv[1]).read().split()
+i = tokens.index("Vertices")
+n = int(tokens[i + 1])
+points = [tuple(float(t) for t in tokens[i + 2 + 4 * k:i + 5 + 4 * k]) for k in range(n)]
+j = tokens.index("Hexahedra")
+m = int(tokens[j + 1])
+hexes = [[int(t) - 1 for t in tokens[j + 2 + 9 * k:j + 10 + 9 * k]] for k in range(m)]
+# the 12 edges of a hexahedron in the Medit (and VTK) vertex order
+edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+on_axis = lambda v: abs(points[v][1]) < 1e-9 and abs(points[v][2]) < 1e-9
+valence = {}
+for h in hexes:
+    for a, b in edges:
+        u, v = h[a], h[b]
+        if on_axis(u) and on_axis(v):
+            key = (min(u, v), max(u, v))
+            valence[key] = valence.get(key, 0) + 1
+length = sum(abs(points[u][0] - points[v][0]) for u, v in valence)
+bad = [k for k, c in valence.items() if c != 1]
+print("%d hexahedra; %d hex edges on the 10-degree edge, total length %.6f, valences %s" %
+      (m, len(valence), length, sorted(set(valence.values()))))
+if not valence or bad or abs(length - 1.0) > 1e-6:
+    print("FAIL: the 10-degree edge is not covered by hex edges of valence 1")
+    sys.exit(1)
+PY
