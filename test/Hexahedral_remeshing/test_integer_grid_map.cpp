@@ -334,6 +334,8 @@ void print(const char* name, const Map_run& r)
 // resolution: with 7,061 and 36,281 tetrahedra the curve runs in the 30-degree wedge (x about 0.94
 // and 0.96), its vertices a median 0.014 and 0.007 from the wedge's faces, a quarter of them on
 // them (the hex layout of the cross-section puts it 0.18 from the faces of the right-angle edge).
+// This test runs the field without the band of fixed frames along acute edges; with it (the default
+// of hexahedral_remeshing()), test_remeshing's PrismThirtyDegreeEdge... gives a valid hex mesh.
 TEST(IntegerGridMap, PrismWithOneValenceThreeCurve)
 {
   const Mesh m = from_off("hexrem_igm_prism", prism_30_60_90_off(), 0.002);

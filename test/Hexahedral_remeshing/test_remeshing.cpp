@@ -311,3 +311,65 @@ TEST(HexahedralRemeshing, MapOfExactFramesAroundASingularAxis)
     EXPECT_EQ(r.status, HR::Integer_grid_map_status::OK);
   }
 }
+
+TEST(HexahedralRemeshing, PrismThirtyDegreeEdgeGetsValenceOneAndOneValenceThreeChain)
+{
+  // The 30-60-90 prism (x, y cross-section, z from 0 to 1) from its surface. Its 30-degree edge is the
+  // line x = 1, y = 0; the band of fixed frames keeps the cross-section's valence-3 curve off it (without
+  // the band the curve ran in the 30-degree wedge against its faces and the map collapsed the wedge).
+  CGAL::Surface_mesh<K::Point_3> surface;
+  std::istringstream off(prism_30_60_90_off());
+  ASSERT_TRUE(CGAL::IO::read_OFF(off, surface));
+  HR::Hexahedral_mesh_3 hexes;
+  const HR::Hexahedral_remeshing_result r =
+    CGAL::hexahedral_remeshing(surface, hexes, HR::parameters::number_of_hexahedra(std::size_t(300)));
+  ASSERT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  EXPECT_EQ(r.frame_field.singularities.number_of_curves(3), 1u);
+  EXPECT_FALSE(r.frame_field.fixed_frames.empty());
+
+  const Cell_check c = check_cells(hexes);
+  EXPECT_EQ(c.non_positive_corners, 0u);
+  EXPECT_EQ(c.bad_quads, 0u);
+  const double volume = 0.5 / std::sqrt(3.0);
+  EXPECT_NEAR(c.volume, volume, 0.03 * volume);
+
+  // counted from the cells: the hex edges on the 30-degree edge have valence 1 and cover it; the
+  // interior edges of valence 3 are parallel to z (one chain through every layer)
+  static const int edges[12][2] = { {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7} };
+  static const int faces[6][4] = { {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7} };
+  std::map<std::array<std::uint32_t, 4>, int> quad_count;
+  for(const auto& hex : hexes.hexahedra)
+    for(const auto& f : faces) {
+      std::array<std::uint32_t, 4> k{ {hex[f[0]], hex[f[1]], hex[f[2]], hex[f[3]]} };
+      std::sort(k.begin(), k.end());
+      ++quad_count[k];
+    }
+  std::vector<char> on_boundary(hexes.points.size(), 0);
+  for(const auto& kv : quad_count)
+    if(kv.second == 1) for(std::uint32_t v : kv.first) on_boundary[v] = 1;
+  auto on_acute_edge = [&](std::uint32_t v) {
+    return std::abs(hexes.points[v].x() - 1) < 1e-6 && std::abs(hexes.points[v].y()) < 1e-6;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_valence;
+  for(const auto& hex : hexes.hexahedra)
+    for(const auto& e : edges) ++edge_valence[std::minmax(hex[e[0]], hex[e[1]])];
+  double acute_length = 0;
+  std::size_t valence3 = 0, other = 0;
+  for(const auto& kv : edge_valence) {
+    const std::uint32_t a = kv.first.first, b = kv.first.second;
+    const auto d = hexes.points[b] - hexes.points[a];
+    if(on_acute_edge(a) && on_acute_edge(b)) {
+      EXPECT_EQ(kv.second, 1) << "a hex edge of the 30-degree edge with valence " << kv.second;
+      acute_length += std::abs(d.z());
+      continue;
+    }
+    if(on_boundary[a] && on_boundary[b]) continue;
+    if(kv.second == 4) continue;
+    if(kv.second != 3) { ++other; continue; }
+    ++valence3;
+    EXPECT_GT(std::abs(d.z()), 0.9 * std::sqrt(d.squared_length())) << "a valence-3 edge across the prism's axis";
+  }
+  EXPECT_NEAR(acute_length, 1.0, 1e-6);
+  EXPECT_EQ(other, 0u);
+  EXPECT_GT(valence3, 0u);
+}
