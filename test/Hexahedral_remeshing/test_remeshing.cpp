@@ -81,6 +81,33 @@ Cell_check check_cells(const HR::Hexahedral_mesh_3& h)
   return c;
 }
 
+// Vertices on the boundary of the hex mesh: those of the quads that only one hexahedron has.
+std::vector<char> boundary_vertices(const HR::Hexahedral_mesh_3& hexes)
+{
+  static const int faces[6][4] = { {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7} };
+  std::map<std::array<std::uint32_t, 4>, int> quad_count;
+  for(const auto& hex : hexes.hexahedra)
+    for(const auto& f : faces) {
+      std::array<std::uint32_t, 4> k{ {hex[f[0]], hex[f[1]], hex[f[2]], hex[f[3]]} };
+      std::sort(k.begin(), k.end());
+      ++quad_count[k];
+    }
+  std::vector<char> on_boundary(hexes.points.size(), 0);
+  for(const auto& kv : quad_count)
+    if(kv.second == 1) for(std::uint32_t v : kv.first) on_boundary[v] = 1;
+  return on_boundary;
+}
+
+// Number of hexahedra around every hex edge (sorted vertex pair).
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_valences(const HR::Hexahedral_mesh_3& hexes)
+{
+  static const int edges[12][2] = { {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7} };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> valence;
+  for(const auto& hex : hexes.hexahedra)
+    for(const auto& e : edges) ++valence[std::minmax(hex[e[0]], hex[e[1]])];
+  return valence;
+}
+
 Mesh from_off(const std::string& name, const std::string& text, double max_volume)
 {
   return tetrahedral_mesh_of_off<Mesh>(name, text, max_volume);
@@ -165,18 +192,7 @@ TEST(HexahedralRemeshing, CylinderSurfaceAtTheHexSizeHasFourValenceThreeChains)
   EXPECT_NEAR(c.volume, 2 * CGAL_PI, 0.06 * 2 * CGAL_PI);
 
   // boundary vertices on the cylinder; interior edges by valence, counted from the cells
-  static const int faces[6][4] = { {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7} };
-  static const int edges[12][2] = { {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7} };
-  std::map<std::array<std::uint32_t, 4>, int> quad_count;
-  for(const auto& hex : hexes.hexahedra)
-    for(const auto& f : faces) {
-      std::array<std::uint32_t, 4> k{ {hex[f[0]], hex[f[1]], hex[f[2]], hex[f[3]]} };
-      std::sort(k.begin(), k.end());
-      ++quad_count[k];
-    }
-  std::vector<char> on_boundary(hexes.points.size(), 0);
-  for(const auto& kv : quad_count)
-    if(kv.second == 1) for(std::uint32_t v : kv.first) on_boundary[v] = 1;
+  const std::vector<char> on_boundary = boundary_vertices(hexes);
   double worst = 0;
   for(std::size_t v = 0; v < hexes.points.size(); ++v) {
     if(!on_boundary[v]) continue;
@@ -185,11 +201,8 @@ TEST(HexahedralRemeshing, CylinderSurfaceAtTheHexSizeHasFourValenceThreeChains)
     worst = (std::max)(worst, d);
   }
   EXPECT_LT(worst, 1 - std::cos(CGAL_PI / 32) + 1e-6); // on the 32-gon prism of the file (its sag off the true cylinder)
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_valence;
-  for(const auto& hex : hexes.hexahedra)
-    for(const auto& e : edges) ++edge_valence[std::minmax(hex[e[0]], hex[e[1]])];
   std::size_t valence3 = 0, other = 0;
-  for(const auto& kv : edge_valence) {
+  for(const auto& kv : edge_valences(hexes)) {
     if(on_boundary[kv.first.first] && on_boundary[kv.first.second]) continue; // boundary (or chord) edges
     if(kv.second == 4) continue;
     if(kv.second != 3) { ++other; continue; }
@@ -335,27 +348,13 @@ TEST(HexahedralRemeshing, PrismThirtyDegreeEdgeGetsValenceOneAndOneValenceThreeC
 
   // counted from the cells: the hex edges on the 30-degree edge have valence 1 and cover it; the
   // interior edges of valence 3 are parallel to z (one chain through every layer)
-  static const int edges[12][2] = { {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7} };
-  static const int faces[6][4] = { {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7} };
-  std::map<std::array<std::uint32_t, 4>, int> quad_count;
-  for(const auto& hex : hexes.hexahedra)
-    for(const auto& f : faces) {
-      std::array<std::uint32_t, 4> k{ {hex[f[0]], hex[f[1]], hex[f[2]], hex[f[3]]} };
-      std::sort(k.begin(), k.end());
-      ++quad_count[k];
-    }
-  std::vector<char> on_boundary(hexes.points.size(), 0);
-  for(const auto& kv : quad_count)
-    if(kv.second == 1) for(std::uint32_t v : kv.first) on_boundary[v] = 1;
+  const std::vector<char> on_boundary = boundary_vertices(hexes);
   auto on_acute_edge = [&](std::uint32_t v) {
     return std::abs(hexes.points[v].x() - 1) < 1e-6 && std::abs(hexes.points[v].y()) < 1e-6;
   };
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_valence;
-  for(const auto& hex : hexes.hexahedra)
-    for(const auto& e : edges) ++edge_valence[std::minmax(hex[e[0]], hex[e[1]])];
   double acute_length = 0;
   std::size_t valence3 = 0, other = 0;
-  for(const auto& kv : edge_valence) {
+  for(const auto& kv : edge_valences(hexes)) {
     const std::uint32_t a = kv.first.first, b = kv.first.second;
     const auto d = hexes.points[b] - hexes.points[a];
     if(on_acute_edge(a) && on_acute_edge(b)) {
