@@ -113,6 +113,12 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{integer_grid_map_output}
+///     \cgalParamDescription{receives the integer-grid map the hexahedra were extracted from (to write it
+///       with `IO::write_HexEx()` or check it with `check_integer_grid_map()`)}
+///     \cgalParamType{`std::reference_wrapper<Hexahedral_remeshing::Integer_grid_map>`}
+///     \cgalParamDefault{none: the map is discarded}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress hooks of every stage}
 ///     \cgalParamType{a class with the member functions of `Hexahedral_remeshing::Hexahedral_remeshing_visitor`}

@@ -209,7 +209,14 @@ grep -q "POINT_DATA" "$tmp/cube_map.vtk" && grep -q "uvw" "$tmp/cube_map.vtk" ||
 "$hexmesh" extract "$tmp/cube.hexex" --out "$tmp/cube_hex.mesh" > "$tmp/out" 2>&1 || fail "extract of the parametrized cube: $(cat "$tmp/out")"
 grep -q "hex mesh            64 hexahedra, 125 vertices, valid" "$tmp/out" || fail "parametrize + extract cube: $(cat "$tmp/out")"
 "$hexmesh" remesh "$data/cube.off" --max-volume 0.002 --hexahedra 27 --out "$tmp/cube_remesh.vtk" --json "$tmp/remesh.json" \
-  --valences-out "$tmp/cube_valences.txt" > "$tmp/out" 2> "$tmp/err" || fail "remesh exit code $?: $(cat "$tmp/err")"
+  --valences-out "$tmp/cube_valences.txt" --hexex "$tmp/cube_remesh.hexex" > "$tmp/out" 2> "$tmp/err" \
+  || fail "remesh exit code $?: $(cat "$tmp/err")"
+# the map remesh extracted from: an integer-grid map by the independent checker, the 27 cells again
+/usr/bin/python3 "$root/test/Hexahedral_remeshing/check_hexex.py" "$tmp/cube_remesh.hexex" --expect-valid \
+  --edge-valence 0,0,0,1,0,0,1 --edge-valence 0,0,0,0,0,1,1 > "$tmp/cube_map_check.json" \
+  || fail "remesh --hexex: not a valid map: $(cat "$tmp/cube_map_check.json")"
+"$hexmesh" extract "$tmp/cube_remesh.hexex" --out "$tmp/cube_remesh_again.mesh" > "$tmp/out2" 2>&1 \
+  && grep -q "hex mesh            27 hexahedra, 64 vertices, valid" "$tmp/out2" || fail "extract of remesh --hexex: $(cat "$tmp/out2")"
 [ "$(grep -vc '^#' "$tmp/cube_valences.txt")" -gt 0 ] || fail "remesh --valences-out wrote no valence"
 grep -q "tetrahedra -> 27 hexahedra (OK)" "$tmp/out" || fail "remesh summary: $(cat "$tmp/out")"
 grep -q "36/36 hex edges on sharp edges with the prescribed valence; 100.0% of the sharp-edge length" "$tmp/out" \
@@ -223,6 +230,8 @@ for k in ('frame_field', 'integer_grid_map', 'extraction', 'smoothing', 'hex_mes
 " "$tmp/remesh.json" || fail "remesh JSON: $(cat "$tmp/remesh.json")"
 expect_error 2 "either --target-edge-length or --hexahedra" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --hexahedra 8 --target-edge-length 0.5
 expect_error 2 "expects a positive length" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --target-edge-length -1
+expect_error 2 "acute-edge-band expects a radius >= 0" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --acute-edge-band -1
+expect_error 2 "acute-edge-band expects a" parametrize "$data/cube.off" --hexex "$tmp/x/a.hexex" --acute-edge-band nan
 [ -z "$(ls -A "$tmp/x")" ] || fail "failed remesh runs left files behind: $(ls "$tmp/x")"
 # a surface without --max-volume is tetrahedralized at the hex size; --valences-out of that run read back
 "$hexmesh" remesh "$data/cube.off" --hexahedra 64 --quiet --out "$tmp/cube64a.mesh" --valences-out "$tmp/cube64.txt" \

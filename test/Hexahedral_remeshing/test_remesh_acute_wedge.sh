@@ -2,7 +2,10 @@
 # End to end on the shipped 10-degree wedge (issue 11): `hexmesh remesh` on the graded tetrahedra must
 # give a valid hex mesh (exit 0), which check_hex_mesh.py checks again independently of the package
 # (corner orientations, conformity, closed boundary), and the 10-degree edge (the x axis) must be covered
-# by hex edges of valence 1, counted here from the output's hexahedra.
+# by hex edges of valence 1, counted here from the output's hexahedra. The integer-grid map the
+# hexahedra come from (--hexex) is checked from its parameters by check_hexex.py: no inverted
+# tetrahedron, every transition a cube rotation with an integer shift, every boundary face on an integer
+# plane, and the parameter angle sum of every tetrahedron edge on the 10-degree edge equal to pi/2.
 #   test_remesh_acute_wedge.sh HEXMESH SOURCE_DIR
 set -uo pipefail
 hexmesh="$1"; root="$2"
@@ -10,9 +13,26 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 export OMP_WAIT_POLICY=PASSIVE
 "$hexmesh" remesh "$root/examples/Hexahedral_remeshing/data/n13c_acute_wedge_graded.msh" --quiet \
-  --out "$tmp/wedge.mesh" > "$tmp/out" 2> "$tmp/err"
+  --out "$tmp/wedge.mesh" --hexex "$tmp/wedge.hexex" > "$tmp/out" 2> "$tmp/err"
 rc=$?
 if [ "$rc" -ne 0 ]; then echo "FAIL: hexmesh remesh exit $rc: $(tail -1 "$tmp/err")"; exit 1; fi
+# numpy: Debian's python3 (scripts/setup installs python3-numpy)
+py=/usr/bin/python3; [ -x "$py" ] || py=python3
+"$py" "$root/test/Hexahedral_remeshing/check_hexex.py" "$tmp/wedge.hexex" --expect-valid --edge-valence 0,0,0,1,0,0,1 \
+  > "$tmp/map.json" || { cat "$tmp/map.json"; echo "FAIL: the map of the wedge"; exit 1; }
+"$py" - "$tmp/map.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+s = r['segments'][0]
+print('map: %d tetrahedra, %d inverted, %d flat, %d bad transitions, %d boundary faces off their plane; '
+      '%d tetrahedron edges on the 10-degree edge (length %.6f) of valences %s' %
+      (r['tetrahedra'], r['inverted_tetrahedra'], r['degenerate_tetrahedra'], r['bad_transitions'],
+       r['boundary_faces_off_plane'], s['edges'], s['length'], s['valences']))
+if abs(s['length'] - 1.0) > 1e-6:
+    print('FAIL: the tetrahedron edges found do not cover the 10-degree edge')
+    sys.exit(1)
+PY
+[ $? -eq 0 ] || exit 1
 python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/wedge.mesh" || exit 1
 python3 - "$tmp/wedge.mesh" <<'PY'
 import sys

@@ -25,6 +25,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -39,7 +40,8 @@ namespace hexmesh {
 inline std::vector<std::string> frames_options()
 {
   std::vector<std::string> options = input_options();
-  for(const char* o : {"heuristic", "valences", "frames", "singularities", "json", "valences-out", "cubecover", "threads"})
+  for(const char* o : {"heuristic", "valences", "frames", "singularities", "json", "valences-out", "cubecover", "threads",
+                       "acute-edge-band"})
     options.push_back(o);
   return options;
 }
@@ -66,6 +68,8 @@ struct Frame_field_options
 {
   CGAL::Hexahedral_remeshing::Valence_heuristic heuristic;
   bool baseline = false, realign = true, quiet = false;
+  // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
+  double acute_edge_band = -1;
 };
 
 inline Frame_field_options frame_field_options(const Arguments& args)
@@ -75,6 +79,11 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   o.baseline = args.has("baseline");
   o.realign = !args.has("no-realign");
   o.quiet = args.has("quiet");
+  if(args.has("acute-edge-band")) {
+    o.acute_edge_band = args.number("acute-edge-band", 0.);
+    if(!(o.acute_edge_band >= 0) || !std::isfinite(o.acute_edge_band))
+      throw Usage_error("option --acute-edge-band expects a radius >= 0 in model units (0: no band)");
+  }
   if(o.baseline && (args.has("heuristic") || args.has("valences")))
     throw Usage_error("--baseline aligns the field with the normals: it takes no --heuristic nor --valences");
   if(args.has("threads")) {
@@ -143,10 +152,12 @@ inline double read_frame_field_input(const Arguments& args, const std::string& i
 }
 
 // Runs the frame-field pipeline with progress; an impossible prescription stays an Input_error (exit 3),
-// any other failure becomes a Stage_error (exit 4).
+// any other failure becomes a Stage_error (exit 4). `band`: radius of the fixed frames along acute
+// valence-1 edges when --acute-edge-band is absent.
 inline CGAL::Hexahedral_remeshing::Frame_field_pipeline_result
 run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, const Mesh& mesh,
-                         const std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress)
+                         const std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress,
+                         double band = 0)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
@@ -154,7 +165,8 @@ run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, co
   try {
     return HR::compute_frame_field_pipeline(
       mesh, HP::valence_heuristic(o.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
-                                  HP::baseline(o.baseline, HP::realignment(o.realign)))).visitor(std::ref(visitor)));
+                                  HP::baseline(o.baseline, HP::realignment(o.realign,
+                                  HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band))))).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {

@@ -28,7 +28,8 @@ namespace hexmesh {
 inline std::vector<std::string> parametrize_options()
 {
   std::vector<std::string> options = input_options();
-  for(const char* o : {"heuristic", "valences", "hexex", "vtk", "json", "valences-out", "target-edge-length", "threads"})
+  for(const char* o : {"heuristic", "valences", "hexex", "vtk", "json", "valences-out", "target-edge-length", "threads",
+                       "acute-edge-band"})
     options.push_back(o);
   return options;
 }
@@ -142,7 +143,10 @@ inline int command_parametrize(const Arguments& args)
   std::vector<std::pair<Index, int> > prescribed;
   const Hex_size size{target, 0};
   const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress, &size);
-  const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress);
+  // the band of fixed frames along acute edges is the one of remesh (two hex edges), so that the map
+  // written here is the one remesh extracts
+  const double band = 2 * HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
+  const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, band);
   HR::Integer_grid_map map;
   const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress);
   progress.start("checking the map");

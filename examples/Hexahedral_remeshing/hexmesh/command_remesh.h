@@ -4,7 +4,7 @@
 //
 // hexmesh remesh IN --out OUT.{mesh,vtk} [--target-edge-length H | --hexahedra N] [--heuristic NAME]
 //                [--valences F] [--valences-out F] [--baseline] [--no-smoothing] [--frames F] [--singularities F] [--json F]
-//                [--keep-partial] [--threads N] [--quiet]
+//                [--hexex F] [--acute-edge-band R] [--keep-partial] [--threads N] [--quiet]
 // The whole pipeline in one call, CGAL::hexahedral_remeshing(): tetrahedra in, hexahedra out.
 #ifndef HEXMESH_COMMAND_REMESH_H
 #define HEXMESH_COMMAND_REMESH_H
@@ -28,7 +28,7 @@ inline std::vector<std::string> remesh_options()
 {
   std::vector<std::string> options = input_options();
   for(const char* o : {"out", "heuristic", "valences", "frames", "singularities", "json", "valences-out",
-                       "target-edge-length", "hexahedra", "threads"})
+                       "target-edge-length", "hexahedra", "threads", "hexex", "acute-edge-band"})
     options.push_back(o);
   return options;
 }
@@ -50,7 +50,7 @@ inline int command_remesh(const Arguments& args)
   const std::size_t hexahedra = args.has("hexahedra") ? std::size_t(args.integer("hexahedra", 0, 1, 20000000)) : 0;
   Output_files outputs;
   outputs.add(out);
-  for(const char* o : {"frames", "singularities", "json", "valences-out"})
+  for(const char* o : {"frames", "singularities", "json", "valences-out", "hexex"})
     if(args.has(o)) outputs.add(args.value(o));
 
   Progress progress(options.quiet);
@@ -62,13 +62,15 @@ inline int command_remesh(const Arguments& args)
   Frames_progress_visitor visitor(progress);
   HR::Hexahedral_mesh_3 hexes;
   HR::Hexahedral_remeshing_result r;
+  HR::Integer_grid_map map;
   // the size is the tail of the parameter chain: --target-edge-length, else --hexahedra, else the default
   auto run = [&](const auto& size) {
     return CGAL::hexahedral_remeshing(
       mesh, hexes,
       HP::valence_heuristic(options.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
         HP::baseline(options.baseline, HP::realignment(options.realign,
-        HP::hexahedral_smoothing(!args.has("no-smoothing"), size))))).visitor(std::ref(visitor)));
+        HP::hexahedral_smoothing(!args.has("no-smoothing"), HP::acute_edge_band_radius(options.acute_edge_band,
+        HP::integer_grid_map_output(std::ref(map), size))))))).visitor(std::ref(visitor)));
   };
   try {
     if(target > 0) r = run(HP::target_edge_length(target));
@@ -95,6 +97,10 @@ inline int command_remesh(const Arguments& args)
   if(args.has("valences-out") && write_hexes) {
     const std::string v = args.value("valences-out");
     outputs.write({v}, [&] { HR::IO::write_edge_valences(v, mesh, r.frame_field.valences); });
+  }
+  if(args.has("hexex") && write_hexes && !map.tetrahedra.empty()) {
+    const std::string x = args.value("hexex");
+    outputs.write({x}, [&] { HR::IO::write_HexEx(x, map); });
   }
   if(args.has("json")) {
     const HR::Frame_field_pipeline_result& f = r.frame_field;
@@ -194,6 +200,7 @@ inline int command_remesh(const Arguments& args)
     if(args.has("frames")) std::cout << "  ParaView            " << args.value("frames") << " (frames: Glyph on frame_u, frame_v, frame_w)\n";
     if(args.has("singularities")) std::cout << "  ParaView            " << args.value("singularities") << " (singular curves)\n";
     if(args.has("valences-out")) std::cout << "  valences            " << args.value("valences-out") << " (a b k: edit, then --valences)\n";
+    if(args.has("hexex") && write_hexes) std::cout << "  map                 " << args.value("hexex") << " (the integer-grid map, libHexEx's format)\n";
     if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
   }
   if(!ok) throw Stage_error(in + ": " + HR::status_name(r.status) + ": " + r.message +

@@ -18,6 +18,7 @@ namespace Hexahedral_remeshing {
 namespace internal_np {
 enum number_of_hexahedra_t { number_of_hexahedra };
 enum hexahedral_smoothing_t { hexahedral_smoothing };
+enum integer_grid_map_output_t { integer_grid_map_output };
 } // namespace internal_np
 
 namespace parameters {
@@ -27,9 +28,13 @@ namespace parameters {
 template <class T> unspecified_type number_of_hexahedra(const T& value);
 /// `hexahedral_remeshing()`: untangle and smooth the extracted hex mesh (`bool`, default `true`).
 template <class T> unspecified_type hexahedral_smoothing(const T& value);
+/// `hexahedral_remeshing()`: receives the integer-grid map the hexahedra come from
+/// (`std::reference_wrapper<Integer_grid_map>`, e.g. `std::ref(map)`; default: none kept).
+template <class T> unspecified_type integer_grid_map_output(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(number_of_hexahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(hexahedral_smoothing)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(integer_grid_map_output)
 #endif
 } // namespace parameters
 

@@ -100,7 +100,8 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
                                               std::to_string(std::llround(estimate)) +
                                               " hexahedra (at most 2e7): choose a larger edge length");
   }
-  Integer_grid_map map;
+  Integer_grid_map own_map;
+  Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
   if(h > 0)
     r.map = compute_integer_grid_map(mesh, r.frame_field.frames, r.frame_field.matchings, r.frame_field.singularities,
                                      map, parameters::target_edge_length(h, np));
