@@ -386,7 +386,10 @@ TEST(IntegerGridMap, AcuteEdgeHasValenceOne)
     }
   EXPECT_GE(acute, 8u);
   print("n13c_acute_line", r);
-  expect_at_most(r.check, Known{1274, 56, 333, 1898});
+  // 30 L-BFGS steps per outer iteration of the untangling instead of 300 (the map 1.5-14x faster on the
+  // shared models, the same ones valid) moved this unusable map from 56 flat tetrahedra and 1,898
+  // interior mismatches to 58 and 1,911; its 1,274 inverted tetrahedra are unchanged
+  expect_at_most(r.check, Known{1274, 58, 333, 1911});
 }
 
 // The smaller shared models (the others are reported in the issue): known deviations per model.

@@ -89,7 +89,12 @@ inline Map_untangling_result untangle_map(const Map_geometry& geometry, const st
   Foldover_free_options options;
   options.stop_when_untangled = true;
   options.max_outer_iterations = 50;
-  options.max_inner_iterations = 300;
+  // The barrier's epsilon, not the inner convergence, is what untangles: it falls about 10% per outer
+  // iteration whatever the inner loop does, and every outer iteration hit a cap of 300 L-BFGS steps.
+  // With 30 the graded acute wedge (65,164 tetrahedra, 19,679 inverted) untangles in 29 outer
+  // iterations and 10.6 s instead of 25 and 72 s; over the 42 shared models the same 17 give valid
+  // hex meshes, the map 1.5-14x faster (B0 52.6 -> 29.0 s, i01c 44.8 -> 16.1 s, n06c 58.9 -> 4.1 s).
+  options.max_inner_iterations = 30;
   const Foldover_free_result f = minimize_foldover_free(problem, z, options);
   r.ran = true;
   r.inverted_before = f.inverted_before;
