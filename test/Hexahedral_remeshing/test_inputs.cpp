@@ -446,6 +446,55 @@ TEST(Gmsh, CylinderSeamIsNoFeatureAndBrepRead)
   }
 }
 
+TEST(Gmsh, CadPartGradedTowardsItsAcuteEdge)
+{
+  // a 20-degree wedge (the x axis is its acute edge) and a box (no edge below 45 degrees)
+  const std::string wedge = temp_dir() + "wedge20.brep", box = temp_dir() + "box.brep";
+  with_gmsh([&] {
+    const double s = std::sin(20 * M_PI / 180), c = std::cos(20 * M_PI / 180);
+    const int p0 = gmsh::model::occ::addPoint(0, 0, 0), p1 = gmsh::model::occ::addPoint(0, 0, 1),
+              p2 = gmsh::model::occ::addPoint(0, -s, c);
+    const int loop = gmsh::model::occ::addCurveLoop({gmsh::model::occ::addLine(p0, p1), gmsh::model::occ::addLine(p1, p2),
+                                                     gmsh::model::occ::addLine(p2, p0)});
+    std::vector<std::pair<int, int> > out;
+    gmsh::model::occ::extrude({{2, gmsh::model::occ::addPlaneSurface({loop})}}, 1, 0, 0, out);
+    gmsh::model::occ::synchronize();
+    gmsh::write(wedge);
+  });
+  with_gmsh([&] {
+    gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+    gmsh::model::occ::synchronize();
+    gmsh::write(box);
+  });
+  const double h = 0.1;
+  // mean length of the mesh edges on the x axis (the acute edge), and the number of tetrahedra
+  auto measure = [](const Mesh& m, double& on_axis) {
+    double total = 0;
+    std::size_t n = 0;
+    for(Index e = 0; e < m.number_of_edges(); ++e) {
+      const auto& v = m.edge_vertices(e);
+      auto axis = [&](Index i) { return std::abs(CGAL::to_double(m.point(i).y())) < 1e-9 && std::abs(CGAL::to_double(m.point(i).z())) < 1e-9; };
+      if(!axis(v[0]) || !axis(v[1])) continue;
+      total += std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(v[0]), m.point(v[1]))));
+      ++n;
+    }
+    on_axis = n > 0 ? total / double(n) : 0;
+    return m.number_of_tetrahedra();
+  };
+  double graded_edge = 0, uniform_edge = 0;
+  const std::size_t graded = measure(read(wedge, HR::parameters::mesh_size(h)), graded_edge);
+  const std::size_t uniform = measure(read(wedge, HR::parameters::acute_edge_grading(false, HR::parameters::mesh_size(h))), uniform_edge);
+  std::printf("20-degree wedge, mesh size %g: graded %zu tetrahedra (edges on the acute edge %g), uniform %zu (%g)\n", h,
+              graded, graded_edge, uniform, uniform_edge);
+  EXPECT_GT(uniform_edge, h / 2);
+  EXPECT_LT(graded_edge, h / 4);     // h / 7 asked
+  EXPECT_GT(graded_edge, h / 14);
+  EXPECT_GT(graded, uniform);        // finer near the edge only (2,741 against 1,361)
+  double unused = 0;
+  EXPECT_EQ(measure(read(box, HR::parameters::mesh_size(0.25)), unused),
+            measure(read(box, HR::parameters::acute_edge_grading(false, HR::parameters::mesh_size(0.25))), unused));
+}
+
 TEST(Gmsh, CadErrors)
 {
   const std::string garbage = temp_dir() + "garbage.step";

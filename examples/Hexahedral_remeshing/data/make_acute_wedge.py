@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Writes the graded tetrahedral mesh of the 10-degree wedge (the geometry of HexMe's n13 "acute line")
-that scripts/run meshes with hexahedra: n13c_acute_wedge_graded.msh.
+"""Writes the 10-degree wedge (the geometry of HexMe's n13 "acute line") as a CAD part,
+n13c_acute_wedge.brep (OpenCASCADE BRep: the main job of scripts/run, which hexmesh tetrahedralizes
+with gmsh, graded towards the acute edge by itself), and a graded tetrahedral mesh of it made here,
+n13c_acute_wedge_graded.msh.
 
 The part: the triangle (y, z) = (0, 0), (0, 1), (-sin 10deg, cos 10deg) extruded along x over [0, 1]
 (the 10-degree edge is the x axis). The tetrahedra are 0.003 on the 10-degree edge, growing linearly
@@ -8,7 +10,7 @@ to 0.04 at 0.2 from it: the band of fixed frames of the hex pipeline (twice the 
 at the default 2000 hexahedra) holds the cross-section's valence-3 curve off the edge, and the wedge
 is only 0.012 thick there, so the curve needs tetrahedra smaller than that to lie inside the wedge
 rather than on its faces (at 0.004 on the edge it still touches them and the map folds). Needs Debian's python3-gmsh (installed by scripts/setup).
-    python3 make_acute_wedge.py [OUT.msh]
+    python3 make_acute_wedge.py [OUT.msh [OUT.brep]]
 """
 import math
 import sys
@@ -16,6 +18,7 @@ import sys
 import gmsh
 
 out = sys.argv[1] if len(sys.argv) > 1 else "n13c_acute_wedge_graded.msh"
+out_cad = sys.argv[2] if len(sys.argv) > 2 else "n13c_acute_wedge.brep"
 gmsh.initialize()
 gmsh.option.setNumber("General.Verbosity", 1)
 gmsh.model.add("acute_wedge")
@@ -26,6 +29,7 @@ lines = [occ.addLine(points[0], points[1]), occ.addLine(points[1], points[2]), o
 section = occ.addPlaneSurface([occ.addCurveLoop(lines)])
 occ.extrude([(2, section)], 1, 0, 0)
 occ.synchronize()
+gmsh.write(out_cad)
 
 
 def on_x_axis(curve):

@@ -46,7 +46,7 @@ inline std::vector<std::string> frames_options()
   return options;
 }
 
-inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "no-chord-split", "quiet"}; }
+inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "no-chord-split", "no-acute-grading", "quiet"}; }
 
 // Pipeline visitor: per-stage progress on stderr (stages over a second), smoothing notes.
 struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipeline_visitor

@@ -77,7 +77,8 @@ inline void read_input_mesh(const Arguments& args, const std::string& in, Mesh& 
                                                                                               : Coincident::REFUSE;
   CGAL::Hexahedral_remeshing::IO::read_tetrahedral_mesh(
     in, mesh, HP::maximum_tetrahedron_volume(args.number("max-volume", 0.), HP::radius_edge_ratio(args.number("radius-edge", 2.),
-              HP::split_boundary_chords(split_chords, HP::mesh_size(mesh_size, HP::coincident_vertices(policy))))));
+              HP::split_boundary_chords(split_chords, HP::mesh_size(mesh_size,
+              HP::acute_edge_grading(!args.has("no-acute-grading"), HP::coincident_vertices(policy)))))));
 }
 
 inline int command_info(const Arguments& args)

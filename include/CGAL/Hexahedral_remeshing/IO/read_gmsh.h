@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/internal/cad/acute_curve_grading.h>
 #include <CGAL/Hexahedral_remeshing/internal/isolated_call.h>
 #include <CGAL/Hexahedral_remeshing/tetrahedralize_surface.h>
 
@@ -29,6 +30,7 @@ namespace Hexahedral_remeshing {
 
 namespace internal_np {
 enum mesh_size_t { mesh_size };
+enum acute_edge_grading_t { acute_edge_grading };
 } // namespace internal_np
 
 namespace parameters {
@@ -36,8 +38,12 @@ namespace parameters {
 /// CAD input: target edge length of gmsh's tetrahedra, in the units of the part (`double`,
 /// default: the diagonal of the part's bounding box divided by 20).
 template <class T> unspecified_type mesh_size(const T& value);
+/// CAD input: grade the tetrahedra towards the CAD curves where the solid's angle is below 45
+/// degrees (`bool`, default `true`; see `read_CAD()`).
+template <class T> unspecified_type acute_edge_grading(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(mesh_size)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(acute_edge_grading)
 #endif
 } // namespace parameters
 
@@ -238,6 +244,14 @@ void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
 /// are feature edges of that curve (seams of periodic faces excluded), and the CAD vertices where
 /// curves meet at an angle are corners.
 ///
+/// Along CAD curves where the solid's angle is below 45 degrees (acute edges, which the pipeline
+/// gives valence 1 and surrounds with fixed frames, see `compute_frame_field_pipeline()`), the
+/// tetrahedra are graded: `mesh_size / 7` on the curve, growing as tan(angle) times the distance to
+/// it, up to `mesh_size` (at most 8 `mesh_size` away). The angle is measured on a first
+/// tetrahedralization (sum of the tetrahedra's dihedral angles at the curve's edges), which is then
+/// redone with the graded size. Without it, the singular curve that such a wedge needs lies against
+/// its faces and the integer-grid map folds (the 10-degree wedge: no hexahedron; graded: a valid mesh).
+///
 /// gmsh runs in a child process (where `fork()` exists): silent, from a clean state at every
 /// call, and a crash of the library on a hostile file becomes an `Input_error`.
 ///
@@ -249,6 +263,11 @@ void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
 ///     \cgalParamDescription{target edge length of the tetrahedra, in the units of the part}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{bounding-box diagonal / 20}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{acute_edge_grading}
+///     \cgalParamDescription{grade the tetrahedra towards the acute CAD curves (below 45 degrees)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Input_error naming the file and the problem: unreadable file (gmsh's message), a part
@@ -262,6 +281,7 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const double size = choose_parameter(get_parameter(np, internal_np::mesh_size), 0.);
+  const bool grading = choose_parameter(get_parameter(np, internal_np::acute_edge_grading), true);
   if(!(size >= 0) || !std::isfinite(size))
     throw Input_error(filename, 0, "the mesh size must be a positive number");
   internal_gmsh::check_readable(filename);
@@ -313,6 +333,19 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
     if(result.tetrahedra.empty())
       throw Input_error(filename, 0, "gmsh produced no tetrahedra (" + internal_gmsh::last_error("no message") +
                         "); check that the part is a valid solid, or try another --mesh-size");
+    const std::map<int, double> acute = grading ? internal::acute_cad_curves(result, std::atan(1.0)) : std::map<int, double>();
+    if(!acute.empty()) {
+      gmsh::model::mesh::clear();
+      internal::set_acute_curve_grading(acute, h);
+      internal_gmsh::call(filename, "tetrahedralize the part graded towards its " + std::to_string(acute.size()) +
+                          " acute edges (mesh size " + std::to_string(h) + ")",
+                          [&] { gmsh::model::mesh::generate(3); });
+      result = Tetrahedral_soup_3<Point>();
+      internal_gmsh::extract(filename, result);
+      if(result.tetrahedra.empty())
+        throw Input_error(filename, 0, "gmsh produced no tetrahedra graded towards the acute edges (" +
+                          internal_gmsh::last_error("no message") + "); try another --mesh-size");
+    }
     return internal::serialize_soup(result);
   }, filename, "gmsh");
   soup = Tetrahedral_soup_3<Point>();
