@@ -10,8 +10,6 @@
 
 #include <gmsh.h>
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -37,20 +35,32 @@ std::map<int, double> acute_cad_curves(const Tetrahedral_soup_3<Point>& soup, do
     curve_of[Edge((std::min)(fe[0], fe[1]), (std::max)(fe[0], fe[1]))] = soup.feature_edge_curves[e];
   }
   std::map<Edge, double> angle;
+  // plain arrays: the readers build without Eigen (the fuzzers do)
+  typedef std::array<double, 3> Vector;
   auto point = [&](std::size_t v) {
     const Point& p = soup.points[v];
-    return Eigen::Vector3d(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]));
+    return Vector{ {CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])} };
+  };
+  auto minus = [](const Vector& a, const Vector& b) { return Vector{ {a[0] - b[0], a[1] - b[1], a[2] - b[2]} }; };
+  auto dot = [](const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto cross = [](const Vector& a, const Vector& b) {
+    return Vector{ {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]} };
   };
   static const int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
   for(const auto& t : soup.tetrahedra)
     for(const auto& e : edges) {
       const Edge key((std::min)(t[e[0]], t[e[1]]), (std::max)(t[e[0]], t[e[1]]));
       if(curve_of.find(key) == curve_of.end()) continue;
-      const Eigen::Vector3d a = point(t[e[0]]), u = (point(t[e[1]]) - a).normalized();
-      Eigen::Vector3d c = point(t[e[2]]) - a, d = point(t[e[3]]) - a;
-      c -= c.dot(u) * u;
-      d -= d.dot(u) * u;
-      angle[key] += std::atan2(c.cross(d).norm(), c.dot(d));
+      const Vector a = point(t[e[0]]);
+      Vector u = minus(point(t[e[1]]), a);
+      const double length = std::sqrt(dot(u, u));
+      if(!(length > 0)) continue;
+      for(double& x : u) x /= length;
+      Vector c = minus(point(t[e[2]]), a), d = minus(point(t[e[3]]), a);
+      const double cu = dot(c, u), du = dot(d, u);
+      for(int k = 0; k < 3; ++k) { c[k] -= cu * u[k]; d[k] -= du * u[k]; }
+      const Vector n = cross(c, d);
+      angle[key] += std::atan2(std::sqrt(dot(n, n)), dot(c, d));
     }
   std::map<int, double> acute;
   for(const auto& ea : angle) {
