@@ -7,9 +7,9 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
-#include <CGAL/Hexahedral_remeshing/internal/frame_field_initialization.h>
-#include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
-#include <CGAL/Hexahedral_remeshing/internal/frame_field_smoothing.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/relaxation.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/smoothing.h>
 
 #include <Eigen/Dense>
 

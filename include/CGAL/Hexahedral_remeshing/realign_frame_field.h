@@ -10,7 +10,9 @@
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 #include <CGAL/Hexahedral_remeshing/frame_field.h>
-#include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/aggregation_multigrid.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/conjugate_gradients.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
 
 #include <Eigen/Dense>
@@ -76,7 +78,7 @@ inline Eigen::Matrix<double, 3, 2> tangent_basis(const Eigen::Vector3d& n)
 /// `min sum_f w_f |E'_i - E'_j g_ij|_F^2 + mu sum_t |E'_t - E_t|_F^2` subject to
 /// `n_i^T E'_t = v_i^T E_t` for the tetrahedron `t` of each boundary triangle `i` (enforced exactly
 /// by elimination: `E'_t = n_i c^T + T Y_t`, `c = E_t^T v_i`, `T` a basis of the plane orthogonal to
-/// `n_i`), by matrix-free conjugate gradients from `E'` = `E`, then projects every matrix to the
+/// `n_i`), by matrix-free conjugate gradients (preconditioned by an aggregation multigrid) from `E'` = `E`, then projects every matrix to the
 /// closest rotation (the constrained column kept exactly on `+-n_i`, a 2D Procrustes for the others).
 /// Afterwards the matchings are recomputed and compared with `matchings`, and the singularity graph
 /// with the one of `frames`: any difference is reported in the result (never hidden).
@@ -151,16 +153,21 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
       for(int j = 0; j < 3; ++j) out.col(j) -= (w * sign[j]) * E.col(perm[j]);
     }
   };
-  struct Face { Index a, b; Signed_permutation g_ab, g_ba; double w; };
+  // 24 bytes per face: the matching's steps both ways are looked up in tables of the 24 rotations
+  struct Face { Index a, b; std::uint8_t matching; double w; };
   std::vector<Face> faces;
+  std::vector<Signed_permutation> step_ab, step_ba;
+  for(int m = 0; m < 24; ++m) {
+    step_ab.emplace_back(group.matrix(m));
+    step_ba.emplace_back(Eigen::Matrix3d(group.matrix(m).transpose()));
+  }
   std::vector<std::array<Index, 4> > tet_faces(nt, {Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index,
                                                     Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index});
   std::vector<double> weights;
   for(Index f = 0; f < mesh.number_of_faces(); ++f) {
     const auto& ft = mesh.face_tetrahedra(f);
     if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) continue;
-    const Eigen::Matrix3d& g = group.matrix(matchings.face_matching[f]);
-    faces.push_back({ft[0], ft[1], Signed_permutation(g), Signed_permutation(g.transpose()), 1.0});
+    faces.push_back({ft[0], ft[1], std::uint8_t(matchings.face_matching[f]), 1.0});
     weights.push_back(uniform ? 1.0 : internal::area_over_distance(mesh, f));
   }
   internal::normalize_mean(weights);
@@ -207,8 +214,8 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
       for(Index fi : tet_faces[t]) {
         if(fi == Tetrahedral_mesh_3<Traits>::null_index) continue;
         const Face& f = faces[fi];
-        if(f.a == t) f.g_ab.add_product(E[f.b], f.w, r);
-        else f.g_ba.add_product(E[f.a], f.w, r);
+        if(f.a == t) step_ab[f.matching].add_product(E[f.b], f.w, r);
+        else step_ba[f.matching].add_product(E[f.a], f.w, r);
       }
       if(is_constrained(t)) Eigen::Map<Eigen::Matrix<double, 2, 3> >(out.data() + offset[t]) = T[t].transpose() * r;
       else Eigen::Map<Eigen::Matrix3d>(out.data() + offset[t]) = r;
@@ -232,28 +239,39 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     }
     b -= AX0;
   }
-  Eigen::VectorXd inv_diag(n);
-  for(std::size_t t = 0; t < nt; ++t)
-    for(std::size_t k = offset[t]; k < offset[t + 1]; ++k) inv_diag[Eigen::Index(k)] = 1.0 / (degree[t] + mu);
+  // Conjugate gradients preconditioned by an aggregation multigrid on the dual graph, whose
+  // coarse unknowns follow the matchings (aggregation_multigrid.h).
   std::vector<Eigen::Matrix3d> E;
-  expand(x, E, false);
-  apply(E, Ax);
-  Eigen::VectorXd r = b - Ax, z = inv_diag.cwiseProduct(r), d = z;
-  double rz = r.dot(z);
-  const double b_norm = (std::max)(b.norm(), 1e-300);
-  result.solver_residual = r.norm() / b_norm;
-  while(result.solver_residual > tolerance && result.solver_iterations < 20000) {
-    expand(d, E, false);
-    apply(E, Ax);
-    const double alpha = rz / d.dot(Ax);
-    x += alpha * d;
-    r -= alpha * Ax;
-    ++result.solver_iterations;
-    result.solver_residual = r.norm() / b_norm;
-    z = inv_diag.cwiseProduct(r);
-    const double rz_new = r.dot(z);
-    d = z + (rz_new / rz) * d;
-    rz = rz_new;
+  std::vector<Eigen::Matrix3d> Ev; // reused: a fresh one per product costs its page faults every time
+  auto apply_reduced = [&](const Eigen::VectorXd& v, Eigen::VectorXd& Av) {
+    expand(v, Ev, false);
+    apply(Ev, Av);
+  };
+  {
+    std::vector<std::array<Index, 2> > face_tets(faces.size());
+    for(std::size_t fi = 0; fi < faces.size(); ++fi) face_tets[fi] = {faces[fi].a, faces[fi].b};
+    internal::Multigrid_fine_system fine;
+    fine.number_of_tets = nt;
+    fine.face_tets = &face_tets;
+    fine.face_weight = &weights;
+    fine.tet_faces = &tet_faces;
+    fine.face_rotation.reserve(faces.size());
+    for(const Face& f : faces) fine.face_rotation.push_back(internal::right_multiplication(group.matrix(f.matching)));
+    fine.offset = offset;
+    fine.embedding.assign(nt, 0);
+    for(std::size_t t = 0; t < nt; ++t) {
+      if(!is_constrained(t)) continue;
+      // vec(T Y) = (I3 x T) vec(Y), Y 2 x 3 column-major
+      Eigen::Matrix<double, 9, 6> Q = Eigen::Matrix<double, 9, 6>::Zero();
+      for(int c = 0; c < 3; ++c) Q.block<3, 2>(3 * c, 2 * c) = T[t];
+      fine.embedding[t] = fine.embeddings.size();
+      fine.embeddings.insert(fine.embeddings.end(), Q.data(), Q.data() + 54);
+    }
+    fine.mu = mu;
+    fine.apply = apply_reduced;
+    const internal::Aggregation_multigrid preconditioner(std::move(fine));
+    internal::preconditioned_conjugate_gradients(apply_reduced, preconditioner, std::move(b), x, tolerance, 20000,
+                                                 result.solver_iterations, result.solver_residual);
   }
   expand(x, E, true);
 

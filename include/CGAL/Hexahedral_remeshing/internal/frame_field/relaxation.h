@@ -1,10 +1,12 @@
 // Copyright (c) 2026 The Hexahedral_remeshing project.
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s) : Hexahedral_remeshing developers
-#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_INITIALIZATION_H
-#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_INITIALIZATION_H
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_RELAXATION_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_RELAXATION_H
 
-#include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/aggregation_multigrid.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/conjugate_gradients.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_projection.h>
 #include <CGAL/Hexahedral_remeshing/internal/spherical_harmonics.h>
 
@@ -23,7 +25,7 @@ namespace internal {
 // The normal equations of sum_f w_f |q_i - q_j|^2 are solved by conjugate gradients, matrix-free:
 // an interior coupling is w I9, so applying the operator costs O(9 #faces), far cheaper than a
 // sparse Cholesky of the 9x-blown-up dual Laplacian (whose fill would be 81 times the scalar one).
-// Jacobi preconditioning is exact on the diagonal blocks (B_t has orthonormal columns).
+// The preconditioner is an aggregation multigrid on the same dual graph (aggregation_multigrid.h).
 // A fixed tet has no unknown: q_t = q(E_t) is all constant part.
 class Frame_field_relaxation
 {
@@ -94,38 +96,49 @@ public:
   }
 
   // Solves the relaxation; returns the relaxed q of every tet. Reports CG iterations and residual.
-  std::vector<Vector9> solve(double tolerance, int max_iterations, int& iterations, double& relative_residual) const
+  // The conjugate gradients are preconditioned by an aggregation multigrid (iterations nearly
+  // independent of the mesh size) or, if `multigrid` is false, by Jacobi (the former method, kept
+  // to compare).
+  std::vector<Vector9> solve(double tolerance, int max_iterations, int& iterations, double& relative_residual,
+                             bool multigrid = true) const
   {
     const Eigen::Index n = Eigen::Index(number_of_unknowns());
     std::vector<Vector9> q;
     // right-hand side: b = -P^T L c (c = constant parts)
-    Eigen::VectorXd zero = Eigen::VectorXd::Zero(n), b;
-    expand(zero, q, true);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(n), b;
+    expand(x, q, true);
     apply_laplacian(q, b);
     b = -b;
-    Eigen::VectorXd inv_diag(n);
-    for(std::size_t t = 0; t < m_p.number_of_tets; ++t) {
-      const double d = m_degree[t] > 0 ? 1.0 / m_degree[t] : 1.0;
-      for(std::size_t k = m_offset[t]; k < m_offset[t + 1]; ++k) inv_diag[Eigen::Index(k)] = d;
-    }
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(n), r = b, z = inv_diag.cwiseProduct(r), d = z, Ad;
-    double rz = r.dot(z);
-    const double b_norm = b.norm();
-    iterations = 0;
-    relative_residual = b_norm > 0 ? 1.0 : 0.0;
-    while(b_norm > 0 && iterations < max_iterations) {
-      expand(d, q, false);
-      apply_laplacian(q, Ad);
-      const double alpha = rz / d.dot(Ad);
-      x += alpha * d;
-      r -= alpha * Ad;
-      ++iterations;
-      relative_residual = r.norm() / b_norm;
-      if(relative_residual < tolerance) break;
-      z = inv_diag.cwiseProduct(r);
-      const double rz_new = r.dot(z);
-      d = z + (rz_new / rz) * d;
-      rz = rz_new;
+    std::vector<Vector9> qv; // reused: a fresh one per product costs its page faults every time
+    auto apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& Av) {
+      expand(v, qv, false);
+      apply_laplacian(qv, Av);
+    };
+    if(multigrid) {
+      Multigrid_fine_system fine;
+      fine.number_of_tets = m_p.number_of_tets;
+      fine.face_tets = &m_p.face_tets;
+      fine.face_weight = &m_p.face_weight;
+      fine.tet_faces = &m_p.tet_faces;
+      fine.offset = m_offset;
+      fine.embedding.assign(m_p.number_of_tets, 0);
+      for(std::size_t t = 0; t < m_p.number_of_tets; ++t) {
+        if(m_offset[t + 1] - m_offset[t] != 2) continue;
+        fine.embedding[t] = fine.embeddings.size();
+        fine.embeddings.insert(fine.embeddings.end(), m_family[t].basis.data(), m_family[t].basis.data() + 18);
+      }
+      fine.apply = apply;
+      const Aggregation_multigrid preconditioner(std::move(fine));
+      preconditioned_conjugate_gradients(apply, preconditioner, std::move(b), x, tolerance, max_iterations, iterations,
+                                         relative_residual);
+    } else {
+      Eigen::VectorXd inv_diag(n);
+      for(std::size_t t = 0; t < m_p.number_of_tets; ++t) {
+        const double d = m_degree[t] > 0 ? 1.0 / m_degree[t] : 1.0;
+        for(std::size_t k = m_offset[t]; k < m_offset[t + 1]; ++k) inv_diag[Eigen::Index(k)] = d;
+      }
+      preconditioned_conjugate_gradients(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = inv_diag.cwiseProduct(r); },
+                                         std::move(b), x, tolerance, max_iterations, iterations, relative_residual);
     }
     expand(x, q, true);
     return q;
@@ -166,4 +179,4 @@ private:
 } // namespace Hexahedral_remeshing
 } // namespace CGAL
 
-#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_INITIALIZATION_H
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_RELAXATION_H

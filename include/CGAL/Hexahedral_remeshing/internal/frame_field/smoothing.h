@@ -4,7 +4,7 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_SMOOTHING_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_SMOOTHING_H
 
-#include <CGAL/Hexahedral_remeshing/internal/frame_field_problem.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/problem.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>

@@ -1,0 +1,55 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_CONJUGATE_GRADIENTS_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_CONJUGATE_GRADIENTS_H
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// Preconditioned conjugate gradients on A x = b from the given x, matrix-free: apply(v, Av) and
+// precondition(r, z) (z = M^-1 r, M symmetric positive definite). Stops at |b - A x| < tolerance |b|
+// or after max_iterations. The dot products are sequential, so the iterates do not depend on the
+// number of threads the operator uses. b is taken by value and becomes the residual (one vector
+// of the size of the system less at the peak: move it in).
+template <class Apply, class Precondition>
+void preconditioned_conjugate_gradients(const Apply& apply, const Precondition& precondition, Eigen::VectorXd b,
+                                        Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations,
+                                        double& relative_residual)
+{
+  Eigen::VectorXd Ax;
+  apply(x, Ax);
+  const double b_norm = (std::max)(b.norm(), 1e-300);
+  Eigen::VectorXd r = std::move(b), z;
+  r -= Ax;
+  iterations = 0;
+  relative_residual = r.norm() / b_norm;
+  if(relative_residual < tolerance) return;
+  precondition(r, z);
+  Eigen::VectorXd d = z;
+  double rz = r.dot(z);
+  while(iterations < max_iterations) {
+    apply(d, Ax);
+    const double alpha = rz / d.dot(Ax);
+    x += alpha * d;
+    r -= alpha * Ax;
+    ++iterations;
+    relative_residual = r.norm() / b_norm;
+    if(relative_residual < tolerance) break;
+    precondition(r, z);
+    const double rz_new = r.dot(z);
+    d = z + (rz_new / rz) * d;
+    rz = rz_new;
+  }
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_CONJUGATE_GRADIENTS_H
