@@ -344,8 +344,8 @@ TEST(FrameFieldSolvers, MultigridIterationsHardlyGrowWithTheMesh)
     const HR::internal::Frame_field_relaxation relaxation(p);
     int it_mg = 0, it_jacobi = 0;
     double res_mg = 1, res_jacobi = 1;
-    const auto q_mg = relaxation.solve(1e-10, 20000, it_mg, res_mg, true);
-    const auto q_jacobi = relaxation.solve(1e-10, 20000, it_jacobi, res_jacobi, false);
+    const auto q_mg = relaxation.solve(1e-10, 20000, it_mg, res_mg, HR::internal::Frame_field_preconditioner::MULTIGRID);
+    const auto q_jacobi = relaxation.solve(1e-10, 20000, it_jacobi, res_jacobi, HR::internal::Frame_field_preconditioner::JACOBI);
     ASSERT_LT(res_mg, 1e-10);
     ASSERT_LT(res_jacobi, 1e-10);
     double diff = 0, norm = 0;

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <vector>
 
@@ -78,7 +79,7 @@ inline Eigen::Matrix<double, 3, 2> tangent_basis(const Eigen::Vector3d& n)
 /// `min sum_f w_f |E'_i - E'_j g_ij|_F^2 + mu sum_t |E'_t - E_t|_F^2` subject to
 /// `n_i^T E'_t = v_i^T E_t` for the tetrahedron `t` of each boundary triangle `i` (enforced exactly
 /// by elimination: `E'_t = n_i c^T + T Y_t`, `c = E_t^T v_i`, `T` a basis of the plane orthogonal to
-/// `n_i`), by matrix-free conjugate gradients (preconditioned by an aggregation multigrid) from `E'` = `E`, then projects every matrix to the
+/// `n_i`), by matrix-free conjugate gradients (preconditioned by an aggregation multigrid on large meshes) from `E'` = `E`, then projects every matrix to the
 /// closest rotation (the constrained column kept exactly on `+-n_i`, a 2D Procrustes for the others).
 /// Afterwards the matchings are recomputed and compared with `matchings`, and the singularity graph
 /// with the one of `frames`: any difference is reported in the result (never hidden).
@@ -222,7 +223,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     }
   };
   // Right-hand side: P^T (mu E_old - (L + mu I) X0); initial guess: the old frames projected.
-  Eigen::VectorXd b(n), x(n), Ax;
+  Eigen::VectorXd b(n), x(n);
   {
     std::vector<Eigen::Matrix3d> E0;
     Eigen::VectorXd zero = Eigen::VectorXd::Zero(n), AX0;
@@ -239,16 +240,19 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     }
     b -= AX0;
   }
-  // Conjugate gradients preconditioned by an aggregation multigrid on the dual graph, whose
-  // coarse unknowns follow the matchings (aggregation_multigrid.h).
+  // Conjugate gradients preconditioned by Jacobi on small meshes, else by an aggregation multigrid on
+  // the dual graph whose coarse unknowns follow the matchings (aggregation_multigrid.h), built at
+  // the first iteration only (a field that needs no realignment needs no multigrid either).
   std::vector<Eigen::Matrix3d> E;
   std::vector<Eigen::Matrix3d> Ev; // reused: a fresh one per product costs its page faults every time
   auto apply_reduced = [&](const Eigen::VectorXd& v, Eigen::VectorXd& Av) {
     expand(v, Ev, false);
     apply(Ev, Av);
   };
-  {
-    std::vector<std::array<Index, 2> > face_tets(faces.size());
+  std::vector<std::array<Index, 2> > face_tets;
+  std::unique_ptr<internal::Aggregation_multigrid> multigrid;
+  auto build_multigrid = [&]() {
+    face_tets.resize(faces.size());
     for(std::size_t fi = 0; fi < faces.size(); ++fi) face_tets[fi] = {faces[fi].a, faces[fi].b};
     internal::Multigrid_fine_system fine;
     fine.number_of_tets = nt;
@@ -269,10 +273,23 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     }
     fine.mu = mu;
     fine.apply = apply_reduced;
-    const internal::Aggregation_multigrid preconditioner(std::move(fine));
-    internal::preconditioned_conjugate_gradients(apply_reduced, preconditioner, std::move(b), x, tolerance, 20000,
-                                                 result.solver_iterations, result.solver_residual);
+    multigrid.reset(new internal::Aggregation_multigrid(std::move(fine)));
+  };
+  Eigen::VectorXd inv_diag;
+  const bool use_multigrid = internal::use_multigrid(internal::Frame_field_preconditioner::AUTOMATIC, nt);
+  if(!use_multigrid) {
+    inv_diag.resize(n);
+    for(std::size_t t = 0; t < nt; ++t)
+      for(std::size_t k = offset[t]; k < offset[t + 1]; ++k) inv_diag[Eigen::Index(k)] = 1.0 / (degree[t] + mu);
   }
+  internal::preconditioned_conjugate_gradients(
+    apply_reduced,
+    [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+      if(!use_multigrid) { z = inv_diag.cwiseProduct(r); return; }
+      if(!multigrid) build_multigrid();
+      (*multigrid)(r, z);
+    },
+    std::move(b), x, tolerance, 20000, result.solver_iterations, result.solver_residual);
   expand(x, E, true);
 
   // Projection to rotations.

@@ -276,14 +276,22 @@ private:
     return (*m_fine.face_tets)[f][0] == t ? m_fine.face_rotation[f] : m_fine.face_rotation[f].transpose();
   }
 
-  // Q_t Q_t^T G (9 x 9), the coarse-to-tet map before the reduction to the tet's unknowns.
-  Matrix9 projected_gauge(std::size_t t, const Signed_permutation_9& G) const
+  typedef Eigen::Matrix<double, 9, Eigen::Dynamic, 0, 9, 9> Matrix9xd;
+
+  // Q_t (9 x d), or the identity for a tet with 9 unknowns.
+  Matrix9xd embedding_of(std::size_t t) const
   {
     const std::size_t d = dofs(t);
-    if(d == 9) return G.matrix();
-    if(d == 0) return Matrix9::Zero();
-    const auto Q = m_fine.Q(t);
-    return Q * (Q.transpose() * G.matrix());
+    if(d == 9) return Matrix9::Identity();
+    return m_fine.Q(t);
+  }
+
+  // U = G^T Q_t: a coarse vector xi reaches the tet's unknowns as x_t = U^T xi.
+  static Matrix9xd lift(const Signed_permutation_9& G, const Matrix9xd& Q)
+  {
+    Matrix9xd U(9, Q.cols());
+    for(int i = 0; i < 9; ++i) U.row(G.perm[i]) = G.sign[i] * Q.row(i);
+    return U;
   }
 
   static Matrix9& block(std::vector<std::pair<Index, Matrix9> >& blocks, Index node)
@@ -373,19 +381,21 @@ private:
       }
     }
     set_members(level, nt);
+    // With U_t = G_t^T Q_t, face f between s and t (q_s ~ M q_t) adds w U_s U_s^T and
+    // -w U_s (Q_s^T M Q_t) U_t^T to the row of s's aggregate: small products of the reduced sizes;
+    // a signed permutation alone between two tets with 9 unknowns each.
     assemble(level, [&](std::size_t a, std::vector<std::pair<Index, Matrix9> >& blocks) {
       for(std::size_t k = level.member_start[a]; k < level.member_start[a + 1]; ++k) {
         const std::size_t s = level.members[k];
         const bool free_s = dofs(s) == 9;
-        const Matrix9 S = projected_gauge(s, level.gauge[s]);
-        const Matrix9 StS = S.transpose() * S;
-        block(blocks, Index(a)) += m_fine.mu * StS;
+        const Matrix9xd Q_s = embedding_of(s);
+        const Matrix9xd U_s = lift(level.gauge[s], Q_s);
+        block(blocks, Index(a)) += (m_fine.mu + m_degree[s]) * (U_s * U_s.transpose());
         for(Index fi : tet_faces[s]) {
           if(fi == none) continue;
           const std::size_t t = other(fi, s);
-          const double w = weight[fi];
-          block(blocks, Index(a)) += w * StS; // (a reference would dangle: block() may grow the vector)
           if(dofs(t) == 0) continue;
+          const double w = weight[fi];
           const Signed_permutation_9 M = rotation_from(fi, s);
           const Index b = level.parent[t];
           if(free_s && dofs(t) == 9) {
@@ -393,7 +403,11 @@ private:
             Matrix9& off = block(blocks, b);
             for(int i = 0; i < 9; ++i) off(i, R.perm[i]) -= w * R.sign[i];
           } else {
-            block(blocks, b) -= w * S.transpose() * (M.matrix() * projected_gauge(t, level.gauge[t]));
+            const Matrix9xd Q_t = embedding_of(t);
+            Matrix9xd MQ_t(9, Q_t.cols());
+            for(int i = 0; i < 9; ++i) MQ_t.row(i) = M.sign[i] * Q_t.row(M.perm[i]);
+            const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 9, 9> C = Q_s.transpose() * MQ_t;
+            block(blocks, b) -= w * (U_s * C) * lift(level.gauge[t], Q_t).transpose();
           }
         }
       }
@@ -506,7 +520,14 @@ private:
         const std::size_t d = dofs(t);
         Vector9 u;
         if(d == 9) u = r.segment<9>(Eigen::Index(m_fine.offset[t]));
-        else u = m_fine.Q(t) * r.segment(Eigen::Index(m_fine.offset[t]), Eigen::Index(d));
+        else {
+          // written out: Eigen's dynamic-size product costs more than the product itself here
+          const double* Q = m_fine.embeddings.data() + m_fine.embedding[t];
+          const double* x = r.data() + m_fine.offset[t];
+          u.setZero();
+          for(std::size_t j = 0; j < d; ++j)
+            for(int i = 0; i < 9; ++i) u[i] += Q[9 * j + std::size_t(i)] * x[j];
+        }
         const Signed_permutation_9& G = c.gauge[t];
         for(int i = 0; i < 9; ++i) sum[G.perm[i]] += G.sign[i] * u[i]; // G^T u
       }
@@ -529,7 +550,15 @@ private:
       Vector9 v;
       for(int i = 0; i < 9; ++i) v[i] = G.sign[i] * xi[9 * a + G.perm[i]];
       if(d == 9) z.segment<9>(Eigen::Index(m_fine.offset[t])) += v;
-      else z.segment(Eigen::Index(m_fine.offset[t]), Eigen::Index(d)) += m_fine.Q(t).transpose() * v;
+      else {
+        const double* Q = m_fine.embeddings.data() + m_fine.embedding[t];
+        double* y = z.data() + m_fine.offset[t];
+        for(std::size_t j = 0; j < d; ++j) {
+          double s = 0;
+          for(int i = 0; i < 9; ++i) s += Q[9 * j + std::size_t(i)] * v[i];
+          y[j] += s;
+        }
+      }
     }
   }
 

@@ -96,11 +96,10 @@ public:
   }
 
   // Solves the relaxation; returns the relaxed q of every tet. Reports CG iterations and residual.
-  // The conjugate gradients are preconditioned by an aggregation multigrid (iterations nearly
-  // independent of the mesh size) or, if `multigrid` is false, by Jacobi (the former method, kept
-  // to compare).
+  // The conjugate gradients are preconditioned by Jacobi or by an aggregation multigrid (iterations
+  // nearly independent of the mesh size), see Frame_field_preconditioner.
   std::vector<Vector9> solve(double tolerance, int max_iterations, int& iterations, double& relative_residual,
-                             bool multigrid = true) const
+                             Frame_field_preconditioner preconditioner = Frame_field_preconditioner::AUTOMATIC) const
   {
     const Eigen::Index n = Eigen::Index(number_of_unknowns());
     std::vector<Vector9> q;
@@ -114,7 +113,7 @@ public:
       expand(v, qv, false);
       apply_laplacian(qv, Av);
     };
-    if(multigrid) {
+    if(use_multigrid(preconditioner, m_p.number_of_tets)) {
       Multigrid_fine_system fine;
       fine.number_of_tets = m_p.number_of_tets;
       fine.face_tets = &m_p.face_tets;
@@ -128,8 +127,8 @@ public:
         fine.embeddings.insert(fine.embeddings.end(), m_family[t].basis.data(), m_family[t].basis.data() + 18);
       }
       fine.apply = apply;
-      const Aggregation_multigrid preconditioner(std::move(fine));
-      preconditioned_conjugate_gradients(apply, preconditioner, std::move(b), x, tolerance, max_iterations, iterations,
+      const Aggregation_multigrid multigrid(std::move(fine));
+      preconditioned_conjugate_gradients(apply, multigrid, std::move(b), x, tolerance, max_iterations, iterations,
                                          relative_residual);
     } else {
       Eigen::VectorXd inv_diag(n);
