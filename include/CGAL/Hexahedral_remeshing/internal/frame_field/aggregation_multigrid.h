@@ -95,9 +95,10 @@ struct Multigrid_fine_system
 // Aggregation multigrid preconditioner (one symmetric V-cycle) for the system above, so that the
 // conjugate gradients need a number of iterations that hardly grows with the mesh, where Jacobi
 // needs about the cube root of the number of tets (the diameter of the dual graph).
-// Coarse unknowns are one 9-vector per aggregate of tets (greedy aggregation of the dual graph:
-// a seed with its free neighbours, then every other tet joins its strongest aggregated
-// neighbour); a tet of aggregate A sees q_t = Q_t Q_t^T G_t xi_A, where the gauge G_t transports
+// Unsmoothed aggregation (Vanek, Mandel and Brezina 1996; as in Notay's AGMG, 2010) adapted to
+// frames: coarse unknowns are one 9-vector per aggregate (greedy aggregation: a seed with its free
+// neighbours and, on the tets, their free neighbours too; every node left joins its strongest
+// aggregated neighbour); a tet of aggregate A sees q_t = Q_t Q_t^T G_t xi_A, where the gauge G_t transports
 // the aggregate's unknowns to the tet's chart along the tree the aggregate grew by (the matchings
 // differ from tet to tet, the constant of the coarse space must not). Coarse operators are the
 // Galerkin products P^T A P, assembled row-wise per aggregate (parallel and deterministic);
