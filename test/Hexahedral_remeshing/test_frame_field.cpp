@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace HR = CGAL::Hexahedral_remeshing;
 typedef HR::Tetrahedral_mesh_3<> Mesh;
@@ -324,6 +327,22 @@ TEST(FrameFieldSolvers, MultigridIsSymmetricPositiveDefiniteAndConverges)
     EXPECT_NEAR(u.dot(Mv), v.dot(Mu), 1e-9 * u.norm() * Mv.norm());
     EXPECT_GT(u.dot(Mu), 0.);
   }
+#ifdef _OPENMP
+  {
+    // parallel loops gather per row: the preconditioner is bitwise the same whatever the thread count
+    const Eigen::VectorXd u = Eigen::VectorXd::Random(n);
+    const int saved = omp_get_max_threads();
+    Eigen::VectorXd one, two;
+    omp_set_num_threads(1);
+    const HR::internal::Aggregation_multigrid M1(s);
+    M1(u, one);
+    omp_set_num_threads(2);
+    const HR::internal::Aggregation_multigrid M2(s);
+    M2(u, two);
+    omp_set_num_threads(saved);
+    EXPECT_TRUE(one == two);
+  }
+#endif
   const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   int iterations = 0;
