@@ -82,7 +82,8 @@ struct Multigrid_fine_system
   std::vector<Signed_permutation_9> face_rotation;              // empty: every M_f is the identity
   std::vector<std::size_t> offset;                              // x_t = x[offset[t], offset[t + 1])
   std::vector<std::size_t> embedding;                           // per tet with 0 < d < 9: Q_t (9 x d, column-major)
-  std::vector<double> embeddings;                               //   at embeddings.data() + embedding[t]
+  std::vector<double> embeddings;                               //   at embeddings.data() + embedding[t],
+  static constexpr std::size_t leading_identity = std::size_t(-1); // or, as embedding[t], the first d columns of I
   Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic> > Q(std::size_t t) const
   {
     return Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic> >(embeddings.data() + embedding[t], 9,
@@ -284,6 +285,7 @@ private:
   {
     const std::size_t d = dofs(t);
     if(d == 9) return Matrix9::Identity();
+    if(m_fine.embedding[t] == Multigrid_fine_system::leading_identity) return Matrix9xd::Identity(9, Eigen::Index(d));
     return m_fine.Q(t);
   }
 
@@ -521,7 +523,10 @@ private:
         const std::size_t d = dofs(t);
         Vector9 u;
         if(d == 9) u = r.segment<9>(Eigen::Index(m_fine.offset[t]));
-        else {
+        else if(m_fine.embedding[t] == Multigrid_fine_system::leading_identity) {
+          u.setZero();
+          for(std::size_t j = 0; j < d; ++j) u[Eigen::Index(j)] = r[Eigen::Index(m_fine.offset[t] + j)];
+        } else {
           // written out: Eigen's dynamic-size product costs more than the product itself here
           const double* Q = m_fine.embeddings.data() + m_fine.embedding[t];
           const double* x = r.data() + m_fine.offset[t];
@@ -551,7 +556,9 @@ private:
       Vector9 v;
       for(int i = 0; i < 9; ++i) v[i] = G.sign[i] * xi[9 * a + G.perm[i]];
       if(d == 9) z.segment<9>(Eigen::Index(m_fine.offset[t])) += v;
-      else {
+      else if(m_fine.embedding[t] == Multigrid_fine_system::leading_identity) {
+        for(std::size_t j = 0; j < d; ++j) z[Eigen::Index(m_fine.offset[t] + j)] += v[Eigen::Index(j)];
+      } else {
         const double* Q = m_fine.embeddings.data() + m_fine.embedding[t];
         double* y = z.data() + m_fine.offset[t];
         for(std::size_t j = 0; j < d; ++j) {
