@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 
 #include <chrono>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -159,15 +160,16 @@ Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
     mesh, boundary_directions,
     weights == Face_weights::UNIFORM ? internal::Face_weighting::UNIFORM : internal::Face_weighting::AREA_OVER_DISTANCE,
     fixed);
-  internal::Frame_field_relaxation relaxation(problem);
+  // released before the smoothing, whose peak memory it would add to (about 300 bytes per tetrahedron)
+  std::unique_ptr<internal::Frame_field_relaxation> relaxation(new internal::Frame_field_relaxation(problem));
   result.setup_seconds = seconds_since(t);
   visitor.end_stage("setup", result.setup_seconds);
 
   visitor.start_stage("initialization");
   t = Clock::now();
-  const std::vector<internal::Vector9> q =
-    relaxation.solve(cg_tolerance, 20000, result.relaxation_iterations, result.relaxation_residual);
-  frames = relaxation.project(q);
+  frames = relaxation->project(
+    relaxation->solve(cg_tolerance, 20000, result.relaxation_iterations, result.relaxation_residual));
+  relaxation.reset();
   result.initial_energy = internal::frame_field_energy(problem, frames);
   result.initialization_seconds = seconds_since(t);
   visitor.end_stage("initialization", result.initialization_seconds);

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <vector>
 
 namespace CGAL {
@@ -32,11 +31,18 @@ template <class Function, class Precondition>
 int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::VectorXd& x, double& fx,
                          const LBFGSpp::LBFGSParam<double>& param)
 {
+  // Memory, the limit at a million tetrahedra: 3 m + 4 vectors. The newest pair is built in the slot
+  // of the one it evicts (s starts as the previous x, y as the previous gradient, Py as the previous
+  // P g), and the first loop of the recursion needs s_i^T q only, q = g - sum_{j > i} alpha_j y_j,
+  // which the dot products s_i^T y_j of the stored pairs give without forming q.
   const Eigen::Index n = x.size();
-  Eigen::VectorXd grad(n), grad_previous(n), x_previous(n), direction(n), Pg(n), Pg_previous(n), z(n), q(n);
-  struct Pair { Eigen::VectorXd s, y, Py; double rho; };
-  std::deque<Pair> pairs;
-  std::vector<double> alpha, history;
+  const int m = (std::max)(1, param.m);
+  struct Pair { Eigen::VectorXd s, y, Py; double rho = 0; };
+  std::vector<Pair> pairs(static_cast<std::size_t>(m));
+  std::vector<std::size_t> order;            // slots of the stored pairs, oldest first
+  Eigen::MatrixXd sy(m, m);                  // sy(i, j) = s_i^T y_j by slot
+  std::vector<double> alpha(static_cast<std::size_t>(m)), history;
+  Eigen::VectorXd grad(n), Pg(n), direction(n);
   fx = f(x, grad);
   history.push_back(fx);
   if(grad.norm() <= param.epsilon || grad.norm() <= param.epsilon_rel * x.norm()) return 1;
@@ -44,10 +50,20 @@ int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::V
   direction = -Pg;
   double step = 1.0 / direction.norm();
   for(int k = 1;; ++k) {
-    x_previous = x;
-    grad_previous = grad;
-    std::swap(Pg, Pg_previous);
-    LBFGSpp::LineSearchNocedalWright<double>::LineSearch(f, fx, x, grad, step, direction, x_previous, param);
+    std::size_t slot = 0;
+    if(int(order.size()) == m) {
+      slot = order.front();
+      order.erase(order.begin());
+    } else {
+      std::vector<bool> used(std::size_t(m), false);
+      for(std::size_t i : order) used[i] = true;
+      while(used[slot]) ++slot;
+    }
+    Pair& p = pairs[slot];
+    p.s = x;
+    p.y = grad;
+    p.Py = Pg;
+    LBFGSpp::LineSearchNocedalWright<double>::LineSearch(f, fx, x, grad, step, direction, p.s, param);
     const double gnorm = grad.norm();
     if(gnorm <= param.epsilon || gnorm <= param.epsilon_rel * x.norm()) return k;
     if(param.past > 0 && k >= param.past) {
@@ -57,31 +73,39 @@ int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::V
     history.push_back(fx);
     if(param.max_iterations != 0 && k >= param.max_iterations) return k;
     precondition(grad, Pg);
-    Pair p{x - x_previous, grad - grad_previous, Pg - Pg_previous, 0.0};
-    const double sy = p.s.dot(p.y);
+    p.s = x - p.s;
+    p.y = grad - p.y;
+    p.Py = Pg - p.Py;
+    const double s_y = p.s.dot(p.y);
     // the strong Wolfe conditions give s^T y > 0; a pair at the limit of the precision is dropped
-    if(sy > 1e-16 * p.y.squaredNorm()) {
-      p.rho = 1.0 / sy;
-      pairs.push_back(std::move(p));
-      if(int(pairs.size()) > param.m) pairs.pop_front();
+    if(s_y > 1e-16 * p.y.squaredNorm()) {
+      p.rho = 1.0 / s_y;
+      for(std::size_t i : order) {
+        sy(Eigen::Index(i), Eigen::Index(slot)) = pairs[i].s.dot(p.y);
+        sy(Eigen::Index(slot), Eigen::Index(i)) = p.s.dot(pairs[i].y);
+      }
+      sy(Eigen::Index(slot), Eigen::Index(slot)) = s_y;
+      order.push_back(slot);
     }
-    q = grad;
-    z = Pg;
-    alpha.assign(pairs.size(), 0.0);
-    for(std::size_t i = pairs.size(); i-- > 0;) {
-      alpha[i] = pairs[i].rho * pairs[i].s.dot(q);
-      q -= alpha[i] * pairs[i].y;
-      z -= alpha[i] * pairs[i].Py;
+    // two-loop recursion (Alg. 7.4) with H0 = gamma P; direction holds P q, then H g
+    direction = Pg;
+    for(std::size_t a = order.size(); a-- > 0;) {
+      const std::size_t i = order[a];
+      double s_q = pairs[i].s.dot(grad);
+      for(std::size_t b = a + 1; b < order.size(); ++b) s_q -= alpha[order[b]] * sy(Eigen::Index(i), Eigen::Index(order[b]));
+      alpha[i] = pairs[i].rho * s_q;
+      direction -= alpha[i] * pairs[i].Py;
     }
-    if(!pairs.empty()) {
-      const double yPy = pairs.back().y.dot(pairs.back().Py);
-      if(yPy > 0) z *= 1.0 / (pairs.back().rho * yPy);
+    if(!order.empty()) {
+      const Pair& newest = pairs[order.back()];
+      const double yPy = newest.y.dot(newest.Py);
+      if(yPy > 0) direction *= 1.0 / (newest.rho * yPy);
     }
-    for(std::size_t i = 0; i < pairs.size(); ++i) {
-      const double beta = pairs[i].rho * pairs[i].y.dot(z);
-      z += (alpha[i] - beta) * pairs[i].s;
+    for(std::size_t i : order) {
+      const double beta = pairs[i].rho * pairs[i].y.dot(direction);
+      direction += (alpha[i] - beta) * pairs[i].s;
     }
-    direction = -z;
+    direction = -direction;
     step = 1.0;
   }
 }
