@@ -13,6 +13,7 @@
 #include <Eigen/Sparse>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #ifdef _OPENMP
@@ -541,4 +542,88 @@ TEST(FrameFieldSolvers, PreconditionedSmoothingNeedsFewerIterations)
   EXPECT_EQ(it_pre_1, it_pre);
   EXPECT_EQ(e_pre_1, e_pre);
   for(std::size_t t = 0; t < preconditioned.size(); ++t) ASSERT_EQ(preconditioned[t], preconditioned_1[t]) << t;
+}
+
+// The Hilbert order of the tets is a permutation that brings the face neighbours closer in memory,
+// and a problem in that order is the same problem: same energy for the same frames, same solution.
+TEST(FrameFieldSolvers, LocalOrderIsTheSameProblem)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.004);
+  const auto directions = HR::boundary_triangle_unit_normals(m);
+  const std::vector<std::uint32_t> order = HR::internal::hilbert_order(m);
+  ASSERT_EQ(order.size(), m.number_of_tetrahedra());
+  std::vector<std::uint32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for(std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);
+  const auto p = HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE);
+  const auto q = HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE, {}, order);
+  ASSERT_EQ(q.mesh_tet, order);
+  ASSERT_EQ(p.face_tets.size(), q.face_tets.size());
+  auto mean_gap = [](const HR::internal::Frame_field_problem& r) {
+    double sum = 0;
+    for(const auto& ft : r.face_tets) sum += std::abs(double(ft[0]) - double(ft[1]));
+    return sum / double(r.face_tets.size());
+  };
+  std::cout << "mean index gap of face neighbours: mesh order " << mean_gap(p) << ", Hilbert order " << mean_gap(q) << "\n";
+  EXPECT_LT(mean_gap(q), mean_gap(p) / 2);
+  // the same frames, permuted, have the same energy
+  std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra()), permuted(m.number_of_tetrahedra());
+  for(std::size_t t = 0; t < frames.size(); ++t)
+    frames[t] = Eigen::AngleAxisd(0.001 * double(t % 997), Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  for(std::size_t i = 0; i < frames.size(); ++i) permuted[i] = frames[order[i]];
+  const double e = HR::internal::frame_field_energy(p, frames);
+  EXPECT_GT(e, 1.0);
+  EXPECT_NEAR(HR::internal::frame_field_energy(q, permuted), e, 1e-12 * e);
+  // constraints follow their tets
+  for(std::size_t i = 0; i < frames.size(); ++i) {
+    ASSERT_EQ(q.is_constrained(std::uint32_t(i)), p.is_constrained(order[i]));
+    if(q.is_constrained(std::uint32_t(i))) ASSERT_EQ(q.direction(std::uint32_t(i)), p.direction(order[i]));
+  }
+  // the relaxation solves the same system
+  int it_p = 0, it_q = 0;
+  double res_p = 1, res_q = 1;
+  const auto x_p = HR::internal::Frame_field_relaxation(p).solve(1e-10, 20000, it_p, res_p);
+  const auto x_q = HR::internal::Frame_field_relaxation(q).solve(1e-10, 20000, it_q, res_q);
+  double diff = 0, norm = 0;
+  for(std::size_t i = 0; i < x_q.size(); ++i) {
+    diff = (std::max)(diff, (x_q[i] - x_p[order[i]]).norm());
+    norm = (std::max)(norm, x_p[order[i]].norm());
+  }
+  EXPECT_LT(diff, 1e-6 * norm);
+  // fixed frames follow their tets
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.3, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix();
+  std::size_t interior = 0;
+  while(p.is_constrained(std::uint32_t(interior))) ++interior;
+  const auto f = HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE,
+                                                        {{interior, R}}, order);
+  for(std::size_t i = 0; i < order.size(); ++i) {
+    ASSERT_EQ(f.is_fixed(std::uint32_t(i)), order[i] == interior);
+    if(order[i] == interior) EXPECT_EQ(f.frame(std::uint32_t(i)), R);
+  }
+  // bad orders
+  std::vector<std::uint32_t> bad = order;
+  bad[0] = bad[1];
+  EXPECT_THROW(HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE, {}, bad), HR::Error);
+  bad.pop_back();
+  EXPECT_THROW(HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE, {}, bad), HR::Error);
+}
+
+// Above 30,000 tets compute_frame_field() solves in the Hilbert order and returns the frames in the
+// mesh's: every boundary tet keeps an axis on its own direction, and the reported energy is that of
+// the returned frames, evaluated on the mesh's order.
+TEST(FrameField, FramesComeBackInTheMeshOrder)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.0004);
+  ASSERT_GE(m.number_of_tetrahedra(), HR::internal::multigrid_minimum_tets);
+  const auto directions = HR::boundary_triangle_unit_normals(m);
+  std::vector<Eigen::Matrix3d> frames;
+  const HR::Frame_field_result r = HR::compute_frame_field(m, directions, frames);
+  ASSERT_EQ(frames.size(), m.number_of_tetrahedra());
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b) {
+    const Eigen::Vector3d c = frames[m.boundary_triangle_tetrahedron(b)].transpose() * directions[b];
+    ASSERT_NEAR(c.cwiseAbs().maxCoeff(), 1.0, 1e-9) << b;
+  }
+  const auto p = HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE);
+  EXPECT_NEAR(HR::internal::frame_field_energy(p, frames), r.energy, 1e-9 * r.energy);
+  EXPECT_LT(r.energy, r.initial_energy);
 }

@@ -7,12 +7,19 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <utility>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -36,6 +43,9 @@ struct Frame_field_problem
   std::vector<Eigen::Vector3d> directions;         // unit alignment directions
   std::vector<Index> fixed_frame;                  // per tet: index into fixed_frames, or none
   std::vector<Eigen::Matrix3d> fixed_frames;
+  // The tets may be numbered in another order than the mesh's, for locality of memory accesses
+  // (see hilbert_order()): mesh_tet[t] is the mesh's index of tet t; empty: the same order.
+  std::vector<Index> mesh_tet;
 
   bool is_fixed(Index t) const { return fixed_frame[t] != none; }
   const Eigen::Matrix3d& frame(Index t) const { return fixed_frames[fixed_frame[t]]; }
@@ -71,11 +81,44 @@ inline void normalize_mean(std::vector<double>& weights)
   for(double& w : weights) w *= scale;
 }
 
+// The tets of `mesh` along a Hilbert curve through their centroids (CGAL::hilbert_sort, median
+// policy: deterministic). The solvers' loops over tets gather from the face neighbours; in this order
+// the neighbours are mostly close in memory too, which cuts the time of a loop by about a fifth on
+// meshes whose own order is not local (TetGen's).
+template <class Traits>
+std::vector<std::uint32_t> hilbert_order(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  const std::size_t nt = mesh.number_of_tetrahedra();
+  std::vector<K::Point_3> centroids(nt);
+  for(std::size_t t = 0; t < nt; ++t) {
+    const auto& tv = mesh.tetrahedron_vertices(typename Tetrahedral_mesh_3<Traits>::Index(t));
+    double c[3] = {0, 0, 0};
+    for(int i = 0; i < 4; ++i) {
+      const auto& q = mesh.point(tv[i]);
+      c[0] += CGAL::to_double(q.x()) / 4;
+      c[1] += CGAL::to_double(q.y()) / 4;
+      c[2] += CGAL::to_double(q.z()) / 4;
+    }
+    centroids[t] = K::Point_3(c[0], c[1], c[2]);
+  }
+  // the adapter's points are the property map's keys: std::size_t
+  std::vector<std::size_t> sorted(nt);
+  std::iota(sorted.begin(), sorted.end(), std::size_t(0));
+  typedef CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<K::Point_3>::type> Sort_traits;
+  CGAL::hilbert_sort(sorted.begin(), sorted.end(), Sort_traits(CGAL::make_property_map(centroids)));
+  return std::vector<std::uint32_t>(sorted.begin(), sorted.end());
+}
+
+// `order` (optional): the mesh's tets in the order the problem numbers them (a permutation); the
+// interior faces are then numbered by their first tet in that order. Indices in the errors are the
+// mesh's.
 template <class Traits>
 Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& mesh,
                                              const std::vector<Eigen::Vector3d>& boundary_directions,
                                              Face_weighting weighting,
-                                             const std::vector<std::pair<std::size_t, Eigen::Matrix3d> >& fixed = {})
+                                             const std::vector<std::pair<std::size_t, Eigen::Matrix3d> >& fixed = {},
+                                             const std::vector<std::uint32_t>& order = {})
 {
   typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
   Frame_field_problem p;
@@ -84,6 +127,17 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     throw Error("frame field: " + std::to_string(boundary_directions.size()) + " boundary directions given for " +
                 std::to_string(mesh.number_of_boundary_triangles()) + " boundary triangles");
   p.number_of_tets = nt;
+  std::vector<Index> rank; // mesh tet -> problem tet
+  if(!order.empty()) {
+    if(order.size() != nt) throw Error("frame field: an order of " + std::to_string(order.size()) + " tetrahedra for " + std::to_string(nt));
+    rank.assign(nt, Frame_field_problem::none);
+    for(std::size_t i = 0; i < nt; ++i) {
+      if(order[i] >= nt || rank[order[i]] != Frame_field_problem::none) throw Error("frame field: the order of the tetrahedra is not a permutation");
+      rank[order[i]] = Index(i);
+    }
+    p.mesh_tet.assign(order.begin(), order.end());
+  }
+  auto to_problem = [&](std::size_t t) { return rank.empty() ? Index(t) : rank[t]; };
   p.tet_faces.assign(nt, {Frame_field_problem::none, Frame_field_problem::none, Frame_field_problem::none,
                           Frame_field_problem::none});
   p.constrained_direction.assign(nt, Frame_field_problem::none);
@@ -94,18 +148,33 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     p.directions[b] = boundary_directions[b] / n;
   }
   std::vector<Index> interior_index(mesh.number_of_faces(), Frame_field_problem::none);
+  std::vector<Index> interior_faces;
   for(Index f = 0; f < mesh.number_of_faces(); ++f) {
     const auto& ft = mesh.face_tetrahedra(f);
     if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) {
       const Index b = mesh.face_boundary_triangle(f);
-      if(p.constrained_direction[ft[0]] != Frame_field_problem::none)
+      if(p.constrained_direction[to_problem(ft[0])] != Frame_field_problem::none)
         throw Error("frame field: tetrahedron " + std::to_string(ft[0]) +
                     " has several boundary faces; build the mesh with split_multi_boundary_tetrahedra(true)");
-      p.constrained_direction[ft[0]] = b;
+      p.constrained_direction[to_problem(ft[0])] = b;
       continue;
     }
+    interior_faces.push_back(f);
+  }
+  if(!rank.empty()) {
+    auto key = [&](Index f) {
+      const auto& ft = mesh.face_tetrahedra(f);
+      const Index a = to_problem(ft[0]), b = to_problem(ft[1]);
+      return std::make_pair((std::min)(a, b), (std::max)(a, b));
+    };
+    std::sort(interior_faces.begin(), interior_faces.end(), [&](Index f, Index g) { return key(f) < key(g); });
+  }
+  p.face_tets.reserve(interior_faces.size());
+  p.face_weight.reserve(interior_faces.size());
+  for(const Index f : interior_faces) {
+    const auto& ft = mesh.face_tetrahedra(f);
     interior_index[f] = Index(p.face_tets.size());
-    p.face_tets.push_back({ft[0], ft[1]});
+    p.face_tets.push_back({to_problem(ft[0]), to_problem(ft[1])});
     p.face_weight.push_back(weighting == Face_weighting::AREA_OVER_DISTANCE ? area_over_distance(mesh, f) : 1.0);
   }
   if(weighting == Face_weighting::AREA_OVER_DISTANCE) normalize_mean(p.face_weight);
@@ -116,19 +185,20 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     const Eigen::Matrix3d& E = tf.second;
     if(!E.allFinite() || (E.transpose() * E - Eigen::Matrix3d::Identity()).norm() > 1e-6 || E.determinant() < 0)
       throw Error("frame field: the fixed frame of tetrahedron " + std::to_string(tf.first) + " is not a rotation");
-    if(p.fixed_frame[tf.first] != Frame_field_problem::none)
+    const Index t = to_problem(tf.first);
+    if(p.fixed_frame[t] != Frame_field_problem::none)
       throw Error("frame field: tetrahedron " + std::to_string(tf.first) + " has several fixed frames");
-    if(p.constrained_direction[tf.first] != Frame_field_problem::none) {
-      const Eigen::Vector3d c = E.transpose() * p.directions[p.constrained_direction[tf.first]];
+    if(p.constrained_direction[t] != Frame_field_problem::none) {
+      const Eigen::Vector3d c = E.transpose() * p.directions[p.constrained_direction[t]];
       if(c.cwiseAbs().maxCoeff() < 1 - 1e-9)
         throw Error("frame field: the fixed frame of boundary tetrahedron " + std::to_string(tf.first) +
                     " has no axis on its boundary direction");
     }
-    p.fixed_frame[tf.first] = Index(p.fixed_frames.size());
+    p.fixed_frame[t] = Index(p.fixed_frames.size());
     p.fixed_frames.push_back(E);
   }
   for(Index t = 0; t < nt; ++t)
-    for(int i = 0; i < 4; ++i) p.tet_faces[t][i] = interior_index[mesh.tetrahedron_face(t, i)];
+    for(int i = 0; i < 4; ++i) p.tet_faces[to_problem(t)][i] = interior_index[mesh.tetrahedron_face(t, i)];
   return p;
 }
 
