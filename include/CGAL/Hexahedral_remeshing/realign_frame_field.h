@@ -18,10 +18,13 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <memory>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -123,6 +126,16 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
   const Singularity_graph graph_before = compute_singularity_graph(mesh, frames, matchings);
 
+  // The solver numbers the tets along a Hilbert curve on the meshes where it is memory-bound, as the
+  // frame field does (internal::hilbert_order()); mesh_tet(s) is the mesh's index of solver tet s.
+  std::vector<std::uint32_t> order, rank;
+  if(nt >= internal::multigrid_minimum_tets) {
+    order = internal::hilbert_order(mesh);
+    rank.resize(nt);
+    for(std::size_t s = 0; s < nt; ++s) rank[order[s]] = std::uint32_t(s);
+  }
+  auto mesh_tet = [&](std::size_t s) { return order.empty() ? s : std::size_t(order[s]); };
+  auto solver_tet = [&](std::size_t t) { return rank.empty() ? Index(t) : Index(rank[t]); };
   // Per tet: the boundary triangle constraining it, the eliminated part X0 and the basis T.
   std::vector<Index> constraint(nt, Tetrahedral_mesh_3<Traits>::null_index);
   std::vector<Eigen::Matrix3d> X0(nt, Eigen::Matrix3d::Zero());
@@ -130,12 +143,13 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   Realignment_result result;
   for(Index b = 0; b < mesh.number_of_boundary_triangles(); ++b) {
     const Index t = mesh.boundary_triangle_tetrahedron(b);
-    if(constraint[t] != Tetrahedral_mesh_3<Traits>::null_index)
+    const Index st = solver_tet(t);
+    if(constraint[st] != Tetrahedral_mesh_3<Traits>::null_index)
       throw Error("realign_frame_field: tetrahedron " + std::to_string(t) + " has several boundary faces");
-    constraint[t] = b;
+    constraint[st] = b;
     const Eigen::Vector3d c = frames[t].transpose() * directions[b].normalized();
-    X0[t] = normals[b] * c.transpose();
-    T[t] = internal::tangent_basis(normals[b]);
+    X0[st] = normals[b] * c.transpose();
+    T[st] = internal::tangent_basis(normals[b]);
   }
   // Interior faces with their matching step in both directions (E_from ~ E_to g), stored as signed
   // permutations: column j of E g is sign[j] * column perm[j] of E (no 3x3 product in the solver).
@@ -165,12 +179,24 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   std::vector<std::array<Index, 4> > tet_faces(nt, {Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index,
                                                     Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index});
   std::vector<double> weights;
-  for(Index f = 0; f < mesh.number_of_faces(); ++f) {
+  std::vector<Index> interior_faces;
+  for(Index f = 0; f < mesh.number_of_faces(); ++f)
+    if(mesh.face_tetrahedra(f)[1] != Tetrahedral_mesh_3<Traits>::null_index) interior_faces.push_back(f);
+  if(!order.empty()) {
+    // by their first tet in the solver's order, for locality too
+    auto key = [&](Index f) {
+      const auto& ft = mesh.face_tetrahedra(f);
+      const Index a = solver_tet(ft[0]), b = solver_tet(ft[1]);
+      return std::make_pair((std::min)(a, b), (std::max)(a, b));
+    };
+    std::sort(interior_faces.begin(), interior_faces.end(), [&](Index f, Index g) { return key(f) < key(g); });
+  }
+  for(const Index f : interior_faces) {
     const auto& ft = mesh.face_tetrahedra(f);
-    if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) continue;
-    faces.push_back({ft[0], ft[1], std::uint8_t(matchings.face_matching[f]), 1.0});
+    faces.push_back({solver_tet(ft[0]), solver_tet(ft[1]), std::uint8_t(matchings.face_matching[f]), 1.0});
     weights.push_back(uniform ? 1.0 : internal::area_over_distance(mesh, f));
   }
+  std::vector<Index>().swap(interior_faces);
   internal::normalize_mean(weights);
   for(std::size_t fi = 0; fi < faces.size(); ++fi) faces[fi].w = weights[fi];
   for(Index fi = 0; fi < faces.size(); ++fi)
@@ -230,12 +256,13 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     expand(zero, E0, true);
     apply(E0, AX0);
     for(std::size_t t = 0; t < nt; ++t) {
+      const Eigen::Matrix3d& F = frames[mesh_tet(t)];
       if(is_constrained(t)) {
-        Eigen::Map<Eigen::Matrix<double, 2, 3> >(b.data() + offset[t]) = T[t].transpose() * (mu * frames[t]);
-        Eigen::Map<Eigen::Matrix<double, 2, 3> >(x.data() + offset[t]) = T[t].transpose() * frames[t];
+        Eigen::Map<Eigen::Matrix<double, 2, 3> >(b.data() + offset[t]) = T[t].transpose() * (mu * F);
+        Eigen::Map<Eigen::Matrix<double, 2, 3> >(x.data() + offset[t]) = T[t].transpose() * F;
       } else {
-        Eigen::Map<Eigen::Matrix3d>(b.data() + offset[t]) = mu * frames[t];
-        Eigen::Map<Eigen::Matrix3d>(x.data() + offset[t]) = frames[t];
+        Eigen::Map<Eigen::Matrix3d>(b.data() + offset[t]) = mu * F;
+        Eigen::Map<Eigen::Matrix3d>(x.data() + offset[t]) = F;
       }
     }
     b -= AX0;
@@ -292,20 +319,21 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     std::move(b), x, tolerance, 20000, result.solver_iterations, result.solver_residual);
   expand(x, E, true);
 
-  // Projection to rotations.
+  // Projection to rotations (t: the solver's tet, frame: the mesh's).
   for(std::size_t t = 0; t < nt; ++t) {
+    Eigen::Matrix3d& frame = frames[mesh_tet(t)];
     if(!is_constrained(t)) {
       Eigen::JacobiSVD<Eigen::Matrix3d> svd(E[t], Eigen::ComputeFullU | Eigen::ComputeFullV);
       Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
       D(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
-      frames[t] = svd.matrixU() * D * svd.matrixV().transpose();
+      frame = svd.matrixU() * D * svd.matrixV().transpose();
       continue;
     }
     const Index bt = constraint[t];
     const Eigen::Vector3d& nrm = normals[bt];
     double s = 1;
-    const int k = internal::aligned_axis(frames[t], directions[bt].normalized(), s);
-    result.constraint_error = (std::max)(result.constraint_error, (nrm.transpose() * E[t] - directions[bt].normalized().transpose() * frames[t]).cwiseAbs().maxCoeff());
+    const int k = internal::aligned_axis(frame, directions[bt].normalized(), s);
+    result.constraint_error = (std::max)(result.constraint_error, (nrm.transpose() * E[t] - directions[bt].normalized().transpose() * frame).cwiseAbs().maxCoeff());
     const int a = (k + 1) % 3, c = (k + 2) % 3;
     // 2D Procrustes of columns a and c inside the tangent plane, keeping a right-handed frame
     const Matrix32& B = T[t];
@@ -325,7 +353,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     R.col(k) = s * nrm;
     R.col(a) = B * Q.col(0);
     R.col(c) = B * Q.col(1);
-    frames[t] = R;
+    frame = R;
     const Eigen::Vector3d check = R.transpose() * nrm;
     result.alignment_error = (std::max)(result.alignment_error, std::abs(1.0 - check.cwiseAbs().maxCoeff()));
   }
