@@ -147,20 +147,30 @@ TEST(Pipeline, SurfaceMeshInput)
   EXPECT_EQ(r.realignment.changed_matchings, 0u);
 }
 
-TEST(Pipeline, DeterministicWhateverTheThreadCount)
-{
 #ifdef _OPENMP
-  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+// The pipeline on m with 1 thread, then 2: bitwise the same frames, directions and energy. Returns
+// the second.
+HR::Frame_field_pipeline_result same_with_one_and_two_threads(const Mesh& m)
+{
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   const auto one = HR::compute_frame_field_pipeline(m);
   omp_set_num_threads(2);
-  const auto two = HR::compute_frame_field_pipeline(m);
+  auto two = HR::compute_frame_field_pipeline(m);
   omp_set_num_threads(saved);
-  ASSERT_EQ(one.frames.size(), two.frames.size());
-  for(std::size_t t = 0; t < one.frames.size(); ++t) ASSERT_TRUE(one.frames[t] == two.frames[t]) << "tet " << t;
+  EXPECT_EQ(one.frames.size(), two.frames.size());
+  for(std::size_t t = 0; t < one.frames.size() && t < two.frames.size(); ++t)
+    if(!(one.frames[t] == two.frames[t])) { ADD_FAILURE() << "tet " << t; break; }
   EXPECT_EQ(one.directions, two.directions);
   EXPECT_EQ(one.frame_field.energy, two.frame_field.energy);
+  return two;
+}
+#endif
+
+TEST(Pipeline, DeterministicWhateverTheThreadCount)
+{
+#ifdef _OPENMP
+  same_with_one_and_two_threads(load(example_data + "/n13c_acute_line.vtk"));
 #else
   GTEST_SKIP() << "built without OpenMP";
 #endif
@@ -174,15 +184,7 @@ TEST(Pipeline, LargeMeshDeterministicAndInTheMeshOrder)
 #ifdef _OPENMP
   const Mesh m = load(example_data + "/cylinder.off", 0.0004);
   ASSERT_GE(m.number_of_tetrahedra(), 30000u);
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(1);
-  const auto one = HR::compute_frame_field_pipeline(m);
-  omp_set_num_threads(2);
-  const auto two = HR::compute_frame_field_pipeline(m);
-  omp_set_num_threads(saved);
-  ASSERT_EQ(one.frames.size(), two.frames.size());
-  for(std::size_t t = 0; t < one.frames.size(); ++t) ASSERT_TRUE(one.frames[t] == two.frames[t]) << "tet " << t;
-  EXPECT_EQ(one.frame_field.energy, two.frame_field.energy);
+  const auto two = same_with_one_and_two_threads(m);
   check_realignment(m, two);
   EXPECT_EQ(two.realignment.changed_matchings, 0u);
   EXPECT_EQ(two.realignment.changed_edges, 0u);

@@ -179,18 +179,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   std::vector<std::array<Index, 4> > tet_faces(nt, {Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index,
                                                     Tetrahedral_mesh_3<Traits>::null_index, Tetrahedral_mesh_3<Traits>::null_index});
   std::vector<double> weights;
-  std::vector<Index> interior_faces;
-  for(Index f = 0; f < mesh.number_of_faces(); ++f)
-    if(mesh.face_tetrahedra(f)[1] != Tetrahedral_mesh_3<Traits>::null_index) interior_faces.push_back(f);
-  if(!order.empty()) {
-    // by their first tet in the solver's order, for locality too
-    auto key = [&](Index f) {
-      const auto& ft = mesh.face_tetrahedra(f);
-      const Index a = solver_tet(ft[0]), b = solver_tet(ft[1]);
-      return std::make_pair((std::min)(a, b), (std::max)(a, b));
-    };
-    std::sort(interior_faces.begin(), interior_faces.end(), [&](Index f, Index g) { return key(f) < key(g); });
-  }
+  std::vector<Index> interior_faces = internal::interior_faces_in_order(mesh, rank);
   for(const Index f : interior_faces) {
     const auto& ft = mesh.face_tetrahedra(f);
     faces.push_back({solver_tet(ft[0]), solver_tet(ft[1]), std::uint8_t(matchings.face_matching[f]), 1.0});

@@ -110,6 +110,23 @@ std::vector<std::uint32_t> hilbert_order(const Tetrahedral_mesh_3<Traits>& mesh)
   return std::vector<std::uint32_t>(sorted.begin(), sorted.end());
 }
 
+// The interior faces of `mesh`, in the mesh's order or, given rank (mesh tet -> solver tet), by the
+// solver's indices of their two tets, so that the loops over faces are local too.
+template <class Traits>
+std::vector<std::uint32_t> interior_faces_in_order(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<std::uint32_t>& rank)
+{
+  std::vector<std::uint32_t> faces;
+  for(std::uint32_t f = 0; f < mesh.number_of_faces(); ++f)
+    if(mesh.face_tetrahedra(f)[1] != Tetrahedral_mesh_3<Traits>::null_index) faces.push_back(f);
+  if(rank.empty()) return faces;
+  auto key = [&](std::uint32_t f) {
+    const auto& ft = mesh.face_tetrahedra(f);
+    return std::make_pair((std::min)(rank[ft[0]], rank[ft[1]]), (std::max)(rank[ft[0]], rank[ft[1]]));
+  };
+  std::sort(faces.begin(), faces.end(), [&](std::uint32_t f, std::uint32_t g) { return key(f) < key(g); });
+  return faces;
+}
+
 // `order` (optional): the mesh's tets in the order the problem numbers them (a permutation); the
 // interior faces are then numbered by their first tet in that order. Indices in the errors are the
 // mesh's.
@@ -148,27 +165,15 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     p.directions[b] = boundary_directions[b] / n;
   }
   std::vector<Index> interior_index(mesh.number_of_faces(), Frame_field_problem::none);
-  std::vector<Index> interior_faces;
   for(Index f = 0; f < mesh.number_of_faces(); ++f) {
     const auto& ft = mesh.face_tetrahedra(f);
-    if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index) {
-      const Index b = mesh.face_boundary_triangle(f);
-      if(p.constrained_direction[to_problem(ft[0])] != Frame_field_problem::none)
-        throw Error("frame field: tetrahedron " + std::to_string(ft[0]) +
-                    " has several boundary faces; build the mesh with split_multi_boundary_tetrahedra(true)");
-      p.constrained_direction[to_problem(ft[0])] = b;
-      continue;
-    }
-    interior_faces.push_back(f);
+    if(ft[1] != Tetrahedral_mesh_3<Traits>::null_index) continue;
+    if(p.constrained_direction[to_problem(ft[0])] != Frame_field_problem::none)
+      throw Error("frame field: tetrahedron " + std::to_string(ft[0]) +
+                  " has several boundary faces; build the mesh with split_multi_boundary_tetrahedra(true)");
+    p.constrained_direction[to_problem(ft[0])] = mesh.face_boundary_triangle(f);
   }
-  if(!rank.empty()) {
-    auto key = [&](Index f) {
-      const auto& ft = mesh.face_tetrahedra(f);
-      const Index a = to_problem(ft[0]), b = to_problem(ft[1]);
-      return std::make_pair((std::min)(a, b), (std::max)(a, b));
-    };
-    std::sort(interior_faces.begin(), interior_faces.end(), [&](Index f, Index g) { return key(f) < key(g); });
-  }
+  const std::vector<Index> interior_faces = interior_faces_in_order(mesh, rank);
   p.face_tets.reserve(interior_faces.size());
   p.face_weight.reserve(interior_faces.size());
   for(const Index f : interior_faces) {
