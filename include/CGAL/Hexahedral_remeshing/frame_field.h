@@ -77,8 +77,11 @@ struct Frame_field_result
 ///
 /// Stages: convex relaxation in L4 spherical harmonics with exact elimination of the constraints
 /// (matrix-free conjugate gradients), projection to the closest frames, then L-BFGS on rotation
-/// parameters until the relative decrease of the energy stalls. Deterministic: the result does not
-/// depend on the number of threads.
+/// parameters until the relative decrease of the energy stalls. On meshes of 30,000 tetrahedra or
+/// more both solves are preconditioned by an aggregation multigrid, and the tetrahedra are numbered
+/// along a Hilbert curve inside the solver (the frames come back in the mesh's order); see the user
+/// manual, section "The Linear Solves at Scale". Deterministic: the result does not depend on the
+/// number of threads.
 ///
 /// \param mesh the tetrahedral mesh; each tetrahedron must have at most one boundary face
 ///        (the default preprocessing of `build_tetrahedral_mesh()` ensures it)
@@ -102,8 +105,8 @@ struct Frame_field_result
 ///     \cgalParamDefault{`2000`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing_tolerance}
-///     \cgalParamDescription{the smoothing stops when an iteration decreases the energy by less than
-///       this fraction}
+///     \cgalParamDescription{the smoothing stops when an iteration (three iterations together on the
+///       meshes where it is preconditioned) decreases the energy by less than this fraction}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`1e-7`}
 ///   \cgalParamNEnd
