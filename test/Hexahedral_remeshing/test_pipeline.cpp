@@ -15,7 +15,9 @@
 #include <omp.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -176,9 +178,54 @@ TEST(Pipeline, DeterministicWhateverTheThreadCount)
 #endif
 }
 
+// The pipeline computes the solvers' order of the tets once and passes it to the frame field and
+// the realignment: the same result as each computing its own. Given the mesh's own order instead, the
+// realignment solves the same system (same frames up to its tolerance); orders that are not
+// permutations are rejected.
+void check_one_order_for_both_solvers(const Mesh& m, const HR::Frame_field_pipeline_result& r)
+{
+  const std::size_t nt = m.number_of_tetrahedra();
+  ASSERT_GE(nt, 30000u);
+  std::vector<std::uint32_t> order = HR::solver_tetrahedron_order(m);
+  std::vector<std::uint32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  ASSERT_EQ(sorted.size(), nt);
+  for(std::size_t i = 0; i < nt; ++i) ASSERT_EQ(sorted[i], i);
+  EXPECT_NE(order, sorted); // not the mesh's order: the test below compares two different orders
+  EXPECT_TRUE(HR::solver_tetrahedron_order(load(example_data + "/n13c_acute_line.vtk")).empty());
+
+  std::vector<Eigen::Matrix3d> frames;
+  HR::compute_frame_field(m, r.directions, frames, HR::parameters::fixed_frames(r.fixed_frames));
+  const std::vector<Eigen::Matrix3d> field = frames;
+  HR::realign_frame_field(m, frames, r.matchings, r.directions);
+  ASSERT_EQ(frames.size(), r.frames.size());
+  for(std::size_t t = 0; t < nt; ++t)
+    if(!(frames[t] == r.frames[t])) { ADD_FAILURE() << "tet " << t; break; }
+
+  frames = field;
+  const auto own = HR::realign_frame_field(m, frames, r.matchings, r.directions,
+                                           HR::parameters::tetrahedron_order(std::vector<std::uint32_t>()));
+  EXPECT_EQ(own.changed_matchings, 0u);
+  double largest = 0;
+  for(std::size_t t = 0; t < nt; ++t) largest = (std::max)(largest, (frames[t] - r.frames[t]).cwiseAbs().maxCoeff());
+  EXPECT_LT(largest, 1e-3);
+  EXPECT_GT(largest, 0.0); // another order sums in another order
+
+  std::vector<std::uint32_t> twice = order;
+  twice[1] = twice[0];
+  std::vector<std::uint32_t> short_order(order.begin(), order.end() - 1);
+  for(const auto& bad : {twice, short_order}) {
+    frames = field;
+    EXPECT_THROW(HR::realign_frame_field(m, frames, r.matchings, r.directions, HR::parameters::tetrahedron_order(bad)),
+                 HR::Error);
+    EXPECT_THROW(HR::compute_frame_field(m, r.directions, frames, HR::parameters::tetrahedron_order(bad)), HR::Error);
+  }
+}
+
 // Above 30,000 tets the frame field and the realignment solve in a Hilbert order of the tets and
 // with the multigrid: still bitwise the same with 1 and 2 threads, and the realigned frames come back
-// in the mesh's order (each boundary tet keeps an axis on its own normal, no matching changes).
+// in the mesh's order (each boundary tet keeps an axis on its own normal, no matching changes); the
+// order both use is computed once.
 TEST(Pipeline, LargeMeshDeterministicAndInTheMeshOrder)
 {
 #ifdef _OPENMP
@@ -189,6 +236,7 @@ TEST(Pipeline, LargeMeshDeterministicAndInTheMeshOrder)
   EXPECT_EQ(two.realignment.changed_matchings, 0u);
   EXPECT_EQ(two.realignment.changed_edges, 0u);
   EXPECT_EQ(two.singularities.number_of_curves(3), 4u);
+  check_one_order_for_both_solvers(m, two);
 #else
   GTEST_SKIP() << "built without OpenMP";
 #endif

@@ -200,7 +200,10 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
         if(r.constraints.face_energies[i] >= CGAL_PI / 4) r.constraints.failed_faces.push_back(i);
     }
   }
-  r.frame_field = compute_frame_field(mesh, r.directions, r.frames, parameters::fixed_frames(r.fixed_frames, np));
+  // one order of the tets for both solvers
+  const std::vector<std::uint32_t> order = solver_tetrahedron_order(mesh);
+  r.frame_field = compute_frame_field(mesh, r.directions, r.frames,
+                                      parameters::tetrahedron_order(order, parameters::fixed_frames(r.fixed_frames, np)));
 
   visitor.start_stage("matchings");
   t = Clock::now();
@@ -213,8 +216,9 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   if(realign) {
     visitor.start_stage("realignment");
     r.realignment = realign_frame_field(mesh, r.frames, r.matchings, r.directions,
-                                        parameters::face_weights(choose_parameter(get_parameter(np, internal_np::face_weights),
-                                                                                  Face_weights::AREA_OVER_DISTANCE)));
+                                        parameters::tetrahedron_order(order,
+                                          parameters::face_weights(choose_parameter(get_parameter(np, internal_np::face_weights),
+                                                                                    Face_weights::AREA_OVER_DISTANCE))));
     r.realigned = true;
     visitor.end_stage("realignment", r.realignment.seconds);
   }

@@ -29,6 +29,7 @@ enum maximum_smoothing_iterations_t { maximum_smoothing_iterations };
 enum smoothing_tolerance_t { smoothing_tolerance };
 enum relaxation_tolerance_t { relaxation_tolerance };
 enum fixed_frames_t { fixed_frames };
+enum tetrahedron_order_t { tetrahedron_order };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -78,6 +79,10 @@ template <class T> unspecified_type relaxation_tolerance(const T& value);
 /// Frame field: frames held fixed, as (tetrahedron, rotation) pairs
 /// (`std::vector<std::pair<std::size_t, Eigen::Matrix3d> >`, default none).
 template <class T> unspecified_type fixed_frames(const T& value);
+/// Frame field and realignment: the order in which the solvers number the tetrahedra, a permutation of
+/// their indices (`std::vector<std::uint32_t>`; empty: the mesh's own order; default: along a Hilbert
+/// curve on meshes of 30,000 tetrahedra or more). The results come back in the mesh's order whatever it is.
+template <class T> unspecified_type tetrahedron_order(const T& value);
 /// Split every interior edge joining two boundary vertices at its midpoint (`bool`, default `false`).
 template <class T> unspecified_type split_boundary_chords(const T& value);
 #else
@@ -88,6 +93,7 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_smoothing_iterations)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(relaxation_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(fixed_frames)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(tetrahedron_order)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(preserve_surface_triangles)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)

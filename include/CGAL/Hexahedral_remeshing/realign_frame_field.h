@@ -103,8 +103,14 @@ inline Eigen::Matrix<double, 3, 2> tangent_basis(const Eigen::Vector3d& n)
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`1e-5`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{tetrahedron_order}
+///     \cgalParamDescription{the order in which the solver numbers the tetrahedra (empty: the mesh's
+///       own), as in `compute_frame_field()`; the frames come back in the mesh's order}
+///     \cgalParamType{`std::vector<std::uint32_t>`, a permutation of the tetrahedra}
+///     \cgalParamDefault{`solver_tetrahedron_order(mesh)`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \throws Error if the sizes do not match the mesh.
+/// \throws Error if the sizes do not match the mesh or the tetrahedron order is not a permutation.
 template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
                                        const Matchings& matchings, const std::vector<Eigen::Vector3d>& directions,
@@ -126,14 +132,10 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
   const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
   const Singularity_graph graph_before = compute_singularity_graph(mesh, frames, matchings);
 
-  // The solver numbers the tets along a Hilbert curve on the meshes where it is memory-bound, as the
-  // frame field does (internal::hilbert_order()); mesh_tet(s) is the mesh's index of solver tet s.
-  std::vector<std::uint32_t> order, rank;
-  if(nt >= internal::multigrid_minimum_tets) {
-    order = internal::hilbert_order(mesh);
-    rank.resize(nt);
-    for(std::size_t s = 0; s < nt; ++s) rank[order[s]] = std::uint32_t(s);
-  }
+  // The solver numbers the tets in the frame field's order (a Hilbert curve on the meshes where it is
+  // memory-bound); mesh_tet(s) is the mesh's index of solver tet s.
+  const std::vector<std::uint32_t> order = internal::solver_order(mesh, np);
+  const std::vector<std::uint32_t> rank = internal::ranks_of_order(order, nt, "realign_frame_field");
   auto mesh_tet = [&](std::size_t s) { return order.empty() ? s : std::size_t(order[s]); };
   auto solver_tet = [&](std::size_t t) { return rank.empty() ? Index(t) : Index(rank[t]); };
   // Per tet: the boundary triangle constraining it, the eliminated part X0 and the basis T.

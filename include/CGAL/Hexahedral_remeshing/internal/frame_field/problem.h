@@ -6,6 +6,7 @@
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/conjugate_gradients.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -19,7 +20,9 @@
 #include <utility>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -110,6 +113,31 @@ std::vector<std::uint32_t> hilbert_order(const Tetrahedral_mesh_3<Traits>& mesh)
   return std::vector<std::uint32_t>(sorted.begin(), sorted.end());
 }
 
+// The order the solvers number the tets in when the caller gives none: the Hilbert order on the
+// meshes where their loops are memory-bound (those of the multigrid), the mesh's own (empty) below.
+template <class Traits>
+std::vector<std::uint32_t> default_solver_order(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  return mesh.number_of_tetrahedra() >= multigrid_minimum_tets ? hilbert_order(mesh) : std::vector<std::uint32_t>();
+}
+
+// rank[t]: the position of mesh tet t in `order` (empty for an empty order, the mesh's own).
+// Throws if `order` is not a permutation of the nt tets; `who` names the caller in the message.
+inline std::vector<std::uint32_t> ranks_of_order(const std::vector<std::uint32_t>& order, std::size_t nt, const std::string& who)
+{
+  std::vector<std::uint32_t> rank;
+  if(order.empty()) return rank;
+  if(order.size() != nt)
+    throw Error(who + ": an order of " + std::to_string(order.size()) + " tetrahedra for " + std::to_string(nt));
+  const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  rank.assign(nt, none);
+  for(std::size_t i = 0; i < nt; ++i) {
+    if(order[i] >= nt || rank[order[i]] != none) throw Error(who + ": the order of the tetrahedra is not a permutation");
+    rank[order[i]] = std::uint32_t(i);
+  }
+  return rank;
+}
+
 // The interior faces of `mesh`, in the mesh's order or, given rank (mesh tet -> solver tet), by the
 // solver's indices of their two tets, so that the loops over faces are local too.
 template <class Traits>
@@ -144,16 +172,8 @@ Frame_field_problem make_frame_field_problem(const Tetrahedral_mesh_3<Traits>& m
     throw Error("frame field: " + std::to_string(boundary_directions.size()) + " boundary directions given for " +
                 std::to_string(mesh.number_of_boundary_triangles()) + " boundary triangles");
   p.number_of_tets = nt;
-  std::vector<Index> rank; // mesh tet -> problem tet
-  if(!order.empty()) {
-    if(order.size() != nt) throw Error("frame field: an order of " + std::to_string(order.size()) + " tetrahedra for " + std::to_string(nt));
-    rank.assign(nt, Frame_field_problem::none);
-    for(std::size_t i = 0; i < nt; ++i) {
-      if(order[i] >= nt || rank[order[i]] != Frame_field_problem::none) throw Error("frame field: the order of the tetrahedra is not a permutation");
-      rank[order[i]] = Index(i);
-    }
-    p.mesh_tet.assign(order.begin(), order.end());
-  }
+  const std::vector<std::uint32_t> rank = ranks_of_order(order, nt, "frame field"); // mesh tet -> problem tet
+  p.mesh_tet.assign(order.begin(), order.end());
   auto to_problem = [&](std::size_t t) { return rank.empty() ? Index(t) : rank[t]; };
   p.tet_faces.assign(nt, {Frame_field_problem::none, Frame_field_problem::none, Frame_field_problem::none,
                           Frame_field_problem::none});
