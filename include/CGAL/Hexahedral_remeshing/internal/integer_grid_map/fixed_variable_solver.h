@@ -51,21 +51,10 @@ public:
   // Solves; returns false if the factorization failed (matrix not positive definite).
   bool solve(Eigen::VectorXd& y)
   {
-    Matrix M = m_H;
+    if(!factorize(m_fixed)) return false;
     Eigen::VectorXd r = m_rhs - m_H * m_values; // m_values is 0 at the free variables
-    for(Eigen::Index j = 0; j < M.outerSize(); ++j)
-      for(Matrix::InnerIterator it(M, j); it; ++it)
-        if(m_fixed[std::size_t(it.row())] || m_fixed[std::size_t(j)]) it.valueRef() = it.row() == j ? 1.0 : 0.0;
     for(Eigen::Index i = 0; i < r.size(); ++i)
       if(m_fixed[std::size_t(i)]) r[i] = m_values[i];
-    if(!m_analysed) {
-      m_llt = std::make_unique<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> >();
-      m_llt->analyzePattern(M);
-      m_analysed = true;
-    }
-    m_llt->factorize(M);
-    ++m_factorizations;
-    if(m_llt->info() != Eigen::Success) return false;
     y = m_llt->solve(r);
     if(m_llt->info() != Eigen::Success) return false;
     for(Eigen::Index i = 0; i < y.size(); ++i)
@@ -73,7 +62,54 @@ public:
     return true;
   }
 
+  // The minimizer as an affine function of the free variables `vars`, with one factorization:
+  // y(z) = y0 + Y z for the values z of vars (the other fixed variables at their values); Y has one
+  // column per variable of vars. The fixed set is left as it was. Returns false if the factorization
+  // failed.
+  bool solve_affine(const std::vector<Eigen::Index>& vars, Eigen::VectorXd& y0, Eigen::MatrixXd& Y)
+  {
+    std::vector<char> fixed = m_fixed;
+    for(Eigen::Index i : vars) fixed[std::size_t(i)] = 1;
+    if(!factorize(fixed)) return false;
+    const Eigen::Index k = Eigen::Index(vars.size());
+    // column 0: the vars at 0; column c + 1: the response to vars[c] = 1 (homogeneous)
+    Eigen::MatrixXd R(m_H.rows(), k + 1);
+    R.col(0) = m_rhs - m_H * m_values;
+    for(Eigen::Index c = 0; c < k; ++c) R.col(c + 1) = -m_H.col(vars[std::size_t(c)]);
+    for(Eigen::Index i = 0; i < R.rows(); ++i)
+      if(fixed[std::size_t(i)]) R.row(i).setZero();
+    for(Eigen::Index i = 0; i < R.rows(); ++i)
+      if(m_fixed[std::size_t(i)]) R(i, 0) = m_values[i];
+    for(Eigen::Index c = 0; c < k; ++c) R(vars[std::size_t(c)], c + 1) = 1.0;
+    const Eigen::MatrixXd X = m_llt->solve(R);
+    if(m_llt->info() != Eigen::Success) return false;
+    y0 = X.col(0);
+    Y = X.rightCols(k);
+    for(Eigen::Index i = 0; i < Y.rows(); ++i)
+      if(fixed[std::size_t(i)]) { y0[i] = m_fixed[std::size_t(i)] ? m_values[i] : 0.0; Y.row(i).setZero(); }
+    for(Eigen::Index c = 0; c < k; ++c) Y(vars[std::size_t(c)], c) = 1.0;
+    return true;
+  }
+
 private:
+  // Numeric factorization of H with the rows and columns of the `fixed` variables replaced by the
+  // identity's (the symbolic analysis is done once).
+  bool factorize(const std::vector<char>& fixed)
+  {
+    Matrix M = m_H;
+    for(Eigen::Index j = 0; j < M.outerSize(); ++j)
+      for(Matrix::InnerIterator it(M, j); it; ++it)
+        if(fixed[std::size_t(it.row())] || fixed[std::size_t(j)]) it.valueRef() = it.row() == j ? 1.0 : 0.0;
+    if(!m_analysed) {
+      m_llt = std::make_unique<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> >();
+      m_llt->analyzePattern(M);
+      m_analysed = true;
+    }
+    m_llt->factorize(M);
+    ++m_factorizations;
+    return m_llt->info() == Eigen::Success;
+  }
+
   Matrix m_H;
   Eigen::VectorXd m_rhs, m_values;
   std::vector<char> m_fixed;
