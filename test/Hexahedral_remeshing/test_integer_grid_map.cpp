@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -315,6 +316,44 @@ TEST(IntegerGridMapParts, ReducedRoundingIsTheSparseRounding)
   }
   EXPECT_LT((y1 - y2).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_LT((r1.relaxed - r2.relaxed).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// Two reference tetrahedra: the first has three corners on the u axis for every value of the variables
+// (a collapsed jog), the second's 12 corner values are free variables (one of them shifted by x0).
+TEST(IntegerGridMapParts, StructurallyFlatTetrahedraAreFlatForEveryValue)
+{
+  HR::internal::Map_geometry geometry;
+  Eigen::Matrix<double, 3, 4> G;
+  G << -1, 1, 0, 0, -1, 0, 1, 0, -1, 0, 0, 1; // B = I
+  geometry.gradients = {G, G};
+  geometry.volumes = {1.0 / 6, 1.0 / 6};
+  std::vector<Eigen::Triplet<double> > tr;
+  int column = 0;
+  for(int c = 0; c < 3; ++c) tr.emplace_back(3 * c, column++, 1.0); // corners 0-2 of tet 0: (y, 0, 0)
+  for(int r = 0; r < 3; ++r) tr.emplace_back(9 + r, column++, 1.0);
+  for(int i = 0; i < 12; ++i) tr.emplace_back(12 + i, column++, 1.0);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> P(24, column);
+  P.setFromTriplets(tr.begin(), tr.end());
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(24);
+  x0[13] = 0.5;
+  const std::vector<char> flat = HR::internal::structurally_flat_tetrahedra(geometry, P, x0);
+  ASSERT_EQ(flat.size(), 2u);
+  EXPECT_EQ(flat[0], 1);
+  EXPECT_EQ(flat[1], 0);
+  // independently: tet 0's parameter volume is zero at any y, tet 1's is not at these
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniform(-2.0, 2.0);
+  for(int k = 0; k < 5; ++k) {
+    Eigen::VectorXd y(column);
+    for(int j = 0; j < column; ++j) y[j] = uniform(random);
+    const Eigen::VectorXd x = P * y + x0;
+    for(int t = 0; t < 2; ++t) {
+      Eigen::Matrix3d D;
+      for(int c = 1; c < 4; ++c) D.col(c - 1) = x.segment<3>(12 * t + 3 * c) - x.segment<3>(12 * t);
+      if(t == 0) EXPECT_EQ(D.determinant(), 0.0);
+      else EXPECT_NE(D.determinant(), 0.0);
+    }
+  }
 }
 
 TEST(IntegerGridMap, CubeHasNCubedUnitCells)

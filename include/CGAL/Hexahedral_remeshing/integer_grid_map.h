@@ -21,6 +21,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
 
@@ -130,10 +131,12 @@ struct Integer_grid_map_result
   std::size_t rounded_inverted_tetrahedra = 0;
   /// Stiffening rounds run.
   int stiffening_rounds = 0;
-  /// True if the foldover-free untangling ran (only when tetrahedra are inverted after stiffening).
+  /// True if the foldover-free untangling ran (only when tetrahedra other than the structurally flat
+  /// ones are inverted or flat after stiffening).
   bool untangling_ran = false;
   /// Tetrahedra that the constraints flatten for every value of the continuous variables (three
-  /// corners on one singular line where the curve jogs); counted when the untangling runs.
+  /// corners on one singular line where the curve jogs). The stiffening and the untangling, which
+  /// cannot repair them, run only while other tetrahedra are inverted or flat.
   std::size_t structurally_flat_tetrahedra = 0;
   /// Sign contradictions of the signed union-find (x = -x): a bad cut or inconsistent matchings.
   std::size_t sign_contradictions = 0;
@@ -428,6 +431,9 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   Eigen::SparseMatrix<double> H;
   Eigen::VectorXd rhs;
   internal::assemble_reduced_system(geometry, frames, s, std::vector<double>(), P, x0, H, rhs);
+  // what neither the stiffening nor the untangling can repair
+  const std::vector<char> flat = internal::structurally_flat_tetrahedra(geometry, P, x0);
+  r.structurally_flat_tetrahedra = std::size_t(std::count(flat.begin(), flat.end(), char(1)));
   r.elimination_seconds = seconds_since(t);
   visitor.end_stage("elimination", r.elimination_seconds);
 
@@ -449,17 +455,16 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   // 5. Stiffening while tetrahedra are inverted.
   visitor.start_stage("stiffening");
   t = Clock::now();
-  if(q.success) r.stiffening_rounds = internal::stiffen_map(geometry, frames, s, P, x0, solver, y, max_stiffening);
+  if(q.success) r.stiffening_rounds = internal::stiffen_map(geometry, frames, s, P, x0, flat, solver, y, max_stiffening);
   r.stiffening_seconds = seconds_since(t);
   visitor.end_stage("stiffening", r.stiffening_seconds);
 
   // 6. Foldover-free untangling of the continuous variables, integers fixed.
   visitor.start_stage("untangling");
   t = Clock::now();
-  if(q.success && untangle && internal::count_non_positive_jacobians(geometry, P * y + x0) > 0) {
-    const internal::Map_untangling_result u = internal::untangle_map(geometry, frames, s, P, x0, integer_column, y);
+  if(q.success && untangle && internal::count_non_positive_jacobians(geometry, P * y + x0, &flat) > 0) {
+    const internal::Map_untangling_result u = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, y);
     r.untangling_ran = u.ran;
-    r.structurally_flat_tetrahedra = u.structurally_flat;
   }
   r.untangling_seconds = seconds_since(t);
   visitor.end_stage("untangling", r.untangling_seconds);

@@ -29,26 +29,30 @@ inline double map_distortion(const Eigen::Matrix3d& J, double s, double maximum)
   return (std::min)(maximum, std::abs(sv[0] / sv[2] - 1.0) + std::abs(std::log(det / (s * s * s))));
 }
 
-inline std::size_t count_non_positive_jacobians(const Map_geometry& geometry, const Eigen::VectorXd& x)
+// Tetrahedra with det J <= 0, those flagged in `skip` (if given) left out.
+inline std::size_t count_non_positive_jacobians(const Map_geometry& geometry, const Eigen::VectorXd& x,
+                                                const std::vector<char>* skip = nullptr)
 {
   std::size_t n = 0;
-  for(std::size_t t = 0; t < geometry.volumes.size(); ++t) n += !(map_jacobian(geometry, x, t).determinant() > 0);
+  for(std::size_t t = 0; t < geometry.volumes.size(); ++t)
+    if(!skip || !(*skip)[t]) n += !(map_jacobian(geometry, x, t).determinant() > 0);
   return n;
 }
 
 // MIQ stiffening: while some tetrahedron is inverted, raise the weight of every tetrahedron by its
 // distortion (w_t += min(c dist_t, d_max)) and re-solve the continuous variables with the integers
-// fixed in `solver` (numeric factorization only). Keeps the best y (fewest non-positive Jacobians);
-// stops after 3 rounds without improvement. Returns the number of rounds run.
+// fixed in `solver` (numeric factorization only). Keeps the best y (fewest non-positive Jacobians
+// among the tetrahedra not flagged in `flat`, which no y repairs); stops after 3 rounds without
+// improvement. Returns the number of rounds run.
 inline int stiffen_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames, double s,
                        const Eigen::SparseMatrix<double, Eigen::RowMajor>& P, const Eigen::VectorXd& x0,
-                       Fixed_variable_solver& solver, Eigen::VectorXd& y, int maximum_rounds,
-                       double c = 1.0, double d_max = 5.0)
+                       const std::vector<char>& flat, Fixed_variable_solver& solver, Eigen::VectorXd& y,
+                       int maximum_rounds, double c = 1.0, double d_max = 5.0)
 {
   const std::size_t nt = geometry.volumes.size();
   std::vector<double> weights(nt, 1.0);
   Eigen::VectorXd x = P * y + x0;
-  std::size_t best = count_non_positive_jacobians(geometry, x);
+  std::size_t best = count_non_positive_jacobians(geometry, x, &flat);
   Eigen::VectorXd best_y = y;
   int rounds = 0, since_best = 0;
   for(; rounds < maximum_rounds && best > 0 && since_best < 3; ++rounds) {
@@ -60,7 +64,7 @@ inline int stiffen_map(const Map_geometry& geometry, const std::vector<Eigen::Ma
     solver.set_system(H, rhs);
     if(!solver.solve(y)) break;
     x = P * y + x0;
-    const std::size_t n = count_non_positive_jacobians(geometry, x);
+    const std::size_t n = count_non_positive_jacobians(geometry, x, &flat);
     if(n < best) { best = n; best_y = y; since_best = 0; }
     else ++since_best;
   }

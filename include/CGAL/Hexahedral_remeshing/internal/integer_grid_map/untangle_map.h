@@ -11,7 +11,6 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
-#include <random>
 #include <vector>
 
 namespace CGAL {
@@ -28,13 +27,13 @@ struct Map_untangling_result
 // Foldover-free untangling of the continuous variables with the integer ones fixed (algorithms.md §4
 // "Validity and repair" (2), Garanzha et al. 2021): K_t = J_t E_t / s, ideal K = I, weight vol_t.
 // Seamlessness and the integer constraints are untouched since only the free continuous y move.
-// Tetrahedra that the constraints flatten whatever y is (three corners on one singular line after a
-// jog of the curve) cannot be repaired and would stall the barrier: they are found by evaluating the
-// map at random y and left out. The result is kept only if it has fewer inverted tetrahedra.
+// Tetrahedra that the constraints flatten whatever y is (`flat`, see structurally_flat_tetrahedra())
+// cannot be repaired and would stall the barrier: they are left out. The result is kept only if it
+// has fewer inverted tetrahedra.
 inline Map_untangling_result untangle_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames,
                                           double s, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
                                           const Eigen::VectorXd& x0, const std::vector<char>& integer,
-                                          Eigen::VectorXd& y)
+                                          const std::vector<char>& flat, Eigen::VectorXd& y)
 {
   typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
   Map_untangling_result r;
@@ -48,18 +47,9 @@ inline Map_untangling_result untangle_map(const Map_geometry& geometry, const st
     else { column_of[std::size_t(j)] = Eigen::Index(free_columns.size()); free_columns.push_back(j); }
   }
   if(free_columns.empty()) return r;
-  // structurally flat tetrahedra: det J = 0 at a random point of the affine space
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd y_random(P.cols());
-  for(Eigen::Index j = 0; j < P.cols(); ++j) y_random[j] = uniform(rng);
-  const Eigen::VectorXd x_random = P * y_random + x0;
   std::vector<std::size_t> elements;
   for(std::size_t t = 0; t < nt; ++t) {
-    Eigen::Matrix<double, 3, 4> U;
-    for(int c = 0; c < 4; ++c) U.col(c) = x_random.segment<3>(Eigen::Index(12 * t + 3 * c));
-    const double scale = (U.col(1) - U.col(0)).norm() * (U.col(2) - U.col(0)).norm() * (U.col(3) - U.col(0)).norm();
-    if(std::abs((U * geometry.gradients[t].transpose()).determinant()) * geometry.volumes[t] * 6 <= 1e-12 * scale) ++r.structurally_flat;
+    if(flat[t]) ++r.structurally_flat;
     else elements.push_back(t);
   }
   Foldover_free_problem problem;
