@@ -8,6 +8,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,6 +18,7 @@
 #include "shared_models.h"
 #include "synthetic_models.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +32,7 @@
 namespace HR = CGAL::Hexahedral_remeshing;
 typedef HR::Tetrahedral_mesh_3<> Mesh;
 typedef Mesh::Index Index;
+typedef Mesh::Point_3 Point;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace fs = std::filesystem;
 
@@ -354,6 +357,73 @@ TEST(IntegerGridMapParts, StructurallyFlatTetrahedraAreFlatForEveryValue)
       else EXPECT_NE(D.determinant(), 0.0);
     }
   }
+}
+
+// The local untangling on a map without seams: the identity map of a TetGen cube (one parameter
+// point per vertex, 3 continuous variables each) with one interior vertex pushed through its star. It
+// untangles every tetrahedron, and moves only the vertices of the region (3 rings around the folds):
+// every other variable keeps its value bit for bit.
+TEST(IntegerGridMapParts, LocalUntanglingMovesOnlyTheRegion)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.0001);
+  const std::size_t nt = m.number_of_tetrahedra(), nv = m.number_of_vertices();
+  const HR::internal::Map_geometry geometry = HR::internal::compute_map_geometry(m);
+  std::vector<Eigen::Triplet<double> > tr;
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int c = 0; c < 4; ++c)
+      for(int r = 0; r < 3; ++r) tr.emplace_back(int(12 * t + 3 * c + r), int(3 * m.tetrahedron_vertices(Index(t))[c] + r), 1.0);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> P(Eigen::Index(12 * nt), Eigen::Index(3 * nv));
+  P.setFromTriplets(tr.begin(), tr.end());
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(Eigen::Index(12 * nt));
+  const double s = 10; // parameter units per model unit
+  Eigen::VectorXd y(Eigen::Index(3 * nv));
+  Index moved = Mesh::null_index;
+  double closest = 1e300;
+  for(Index v = 0; v < nv; ++v) {
+    const Point p = m.point(v);
+    for(int r = 0; r < 3; ++r) y[3 * v + r] = s * CGAL::to_double(p[r]);
+    const double d = CGAL::squared_distance(p, Point(0.5, 0.5, 0.5));
+    if(!m.is_boundary_vertex(v) && d < closest) { closest = d; moved = v; }
+  }
+  ASSERT_NE(moved, Mesh::null_index);
+  // through the star: a vertex of one of its edges, mirrored about it
+  const Index other = m.edge_vertices(m.vertex_edges(moved)[0])[0] == moved ? m.edge_vertices(m.vertex_edges(moved)[0])[1]
+                                                                         : m.edge_vertices(m.vertex_edges(moved)[0])[0];
+  for(int r = 0; r < 3; ++r) y[3 * moved + r] += 1.5 * (y[3 * other + r] - y[3 * moved + r]);
+  auto inverted = [&](const Eigen::VectorXd& yy) {
+    const Eigen::VectorXd x = P * yy + x0;
+    std::size_t n = 0;
+    for(std::size_t t = 0; t < nt; ++t) {
+      K::Point_3 q[4];
+      for(int c = 0; c < 4; ++c) q[c] = K::Point_3(x[12 * t + 3 * c], x[12 * t + 3 * c + 1], x[12 * t + 3 * c + 2]);
+      // the mesh's own tets are positively oriented in space, so the identity map's are too
+      n += CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE;
+    }
+    return n;
+  };
+  ASSERT_GT(inverted(y), 0u);
+  const std::vector<char> flat(nt, 0), integer(std::size_t(3 * nv), 0);
+  const std::vector<Eigen::Matrix3d> frames(nt, Eigen::Matrix3d::Identity());
+  const std::vector<char> region = HR::internal::untangling_region(m, geometry, P * y + x0, flat, 3);
+  std::vector<char> in_region(nv, 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    if(region[t])
+      for(Index v : m.tetrahedron_vertices(Index(t))) in_region[v] = 1;
+  const std::size_t region_vertices = std::size_t(std::count(in_region.begin(), in_region.end(), char(1)));
+  EXPECT_LT(region_vertices, nv / 4);
+  EXPECT_LE(std::size_t(std::count(region.begin(), region.end(), char(1))), nt / 4); // the map would untangle it locally
+  const Eigen::VectorXd before = y;
+  const auto u = HR::internal::untangle_map(geometry, frames, s, P, x0, integer, flat, y, &region);
+  EXPECT_TRUE(u.ran);
+  EXPECT_EQ(inverted(y), 0u);
+  std::size_t changed = 0;
+  for(Index v = 0; v < nv; ++v)
+    for(int r = 0; r < 3; ++r)
+      if(y[3 * v + r] != before[3 * v + r]) {
+        ++changed;
+        EXPECT_TRUE(in_region[v]) << v;
+      }
+  EXPECT_GT(changed, 0u);
 }
 
 TEST(IntegerGridMap, CubeHasNCubedUnitCells)

@@ -292,6 +292,8 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   }
   const int max_stiffening = choose_parameter(get_parameter(np, internal_np::maximum_stiffening_iterations), 20);
   const bool untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
+  // the local untangling's reach around the folds (tets through shared vertices)
+  const int untangling_rings = 3;
     r.target_edge_length = h;
   const double s = 1.0 / h;
 
@@ -463,8 +465,18 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   visitor.start_stage("untangling");
   t = Clock::now();
   if(q.success && untangle && internal::count_non_positive_jacobians(geometry, P * y + x0, &flat) > 0) {
-    const internal::Map_untangling_result u = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, y);
-    r.untangling_ran = u.ran;
+    // first where the map folds (a few rings of tets around it: a global untangling of B0 moves
+    // 90,696 tets to repair a handful); if some fold remains, everywhere, from the stiffened map (from
+    // the partly untangled one, s12c's hex mesh came out invalid). Folds whose rings hold more than a
+    // quarter of the tets go to the global untangling directly.
+    const Eigen::VectorXd stiffened = y;
+    const std::vector<char> region = internal::untangling_region(mesh, geometry, P * y + x0, flat, untangling_rings);
+    const bool local = std::size_t(std::count(region.begin(), region.end(), char(1))) <= nt / 4;
+    if(local) r.untangling_ran = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, y, &region).ran;
+    if(!local || internal::count_non_positive_jacobians(geometry, P * y + x0, &flat) > 0) {
+      y = stiffened;
+      r.untangling_ran = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, y).ran || r.untangling_ran;
+    }
   }
   r.untangling_seconds = seconds_since(t);
   visitor.end_stage("untangling", r.untangling_seconds);

@@ -4,6 +4,7 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_UNTANGLE_MAP_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_UNTANGLE_MAP_H
 
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
 #include <CGAL/Hexahedral_remeshing/internal/untangling/foldover_free_map.h>
 
@@ -11,6 +12,7 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -28,36 +30,54 @@ struct Map_untangling_result
 // "Validity and repair" (2), Garanzha et al. 2021): K_t = J_t E_t / s, ideal K = I, weight vol_t.
 // Seamlessness and the integer constraints are untouched since only the free continuous y move.
 // Tetrahedra that the constraints flatten whatever y is (`flat`, see structurally_flat_tetrahedra())
-// cannot be repaired and would stall the barrier: they are left out. The result is kept only if it
-// has fewer inverted tetrahedra.
+// cannot be repaired and would stall the barrier: they are left out. With `region` (one flag per
+// tetrahedron), only the continuous variables of the region's tetrahedra move, and the energy is that
+// of the tetrahedra they reach (the others keep their map). The result is kept only if it has fewer
+// inverted tetrahedra.
 inline Map_untangling_result untangle_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames,
                                           double s, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
                                           const Eigen::VectorXd& x0, const std::vector<char>& integer,
-                                          const std::vector<char>& flat, Eigen::VectorXd& y)
+                                          const std::vector<char>& flat, Eigen::VectorXd& y,
+                                          const std::vector<char>* region = nullptr)
 {
   typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
   Map_untangling_result r;
   const std::size_t nt = geometry.volumes.size();
-  // continuous columns
+  // the moving (continuous) columns
+  std::vector<char> moving(std::size_t(P.cols()), 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    if(!region || (*region)[t])
+      for(Eigen::Index i = Eigen::Index(12 * t); i < Eigen::Index(12 * t + 12); ++i)
+        for(Row_matrix::InnerIterator it(P, i); it; ++it)
+          if(!integer[std::size_t(it.col())]) moving[std::size_t(it.col())] = 1;
   std::vector<Eigen::Index> free_columns;
   std::vector<Eigen::Index> column_of(std::size_t(P.cols()), -1);
-  Eigen::VectorXd y_int = Eigen::VectorXd::Zero(P.cols());
-  for(Eigen::Index j = 0; j < P.cols(); ++j) {
-    if(integer[std::size_t(j)]) y_int[j] = y[j];
-    else { column_of[std::size_t(j)] = Eigen::Index(free_columns.size()); free_columns.push_back(j); }
-  }
+  Eigen::VectorXd y_fixed = y;
+  for(Eigen::Index j = 0; j < P.cols(); ++j)
+    if(moving[std::size_t(j)]) {
+      column_of[std::size_t(j)] = Eigen::Index(free_columns.size());
+      free_columns.push_back(j);
+      y_fixed[j] = 0;
+    }
   if(free_columns.empty()) return r;
+  auto reached = [&](std::size_t t) {
+    if(!region) return true;
+    for(Eigen::Index i = Eigen::Index(12 * t); i < Eigen::Index(12 * t + 12); ++i)
+      for(Row_matrix::InnerIterator it(P, i); it; ++it)
+        if(moving[std::size_t(it.col())]) return true;
+    return false;
+  };
   std::vector<std::size_t> elements;
   for(std::size_t t = 0; t < nt; ++t) {
     if(flat[t]) ++r.structurally_flat;
-    else elements.push_back(t);
+    else if(reached(t)) elements.push_back(t);
   }
   Foldover_free_problem problem;
   const Eigen::Index E = Eigen::Index(elements.size());
   problem.x0.resize(12 * E);
   problem.M.resize(elements.size());
   problem.w.resize(elements.size());
-  const Eigen::VectorXd x_fixed = P * y_int + x0;
+  const Eigen::VectorXd x_fixed = P * y_fixed + x0;
   std::vector<Eigen::Triplet<double> > triplets;
   Eigen::Matrix<double, 3, 4> S;
   S << -1, 1, 0, 0, -1, 0, 1, 0, -1, 0, 0, 1;
@@ -92,6 +112,27 @@ inline Map_untangling_result untangle_map(const Map_geometry& geometry, const st
   if(f.inverted_after < f.inverted_before)
     for(std::size_t k = 0; k < free_columns.size(); ++k) y[free_columns[k]] = z[Eigen::Index(k)];
   return r;
+}
+
+// The tetrahedra within `rings` rings (through shared vertices) of those with det J <= 0 that are not
+// structurally flat: where a local untangling moves the map.
+template <class Traits>
+std::vector<char> untangling_region(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry,
+                                    const Eigen::VectorXd& x, const std::vector<char>& flat, int rings)
+{
+  const std::size_t nt = geometry.volumes.size();
+  std::vector<char> region(nt, 0), marked(mesh.number_of_vertices(), 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    region[t] = !flat[t] && !(map_jacobian(geometry, x, t).determinant() > 0);
+  for(int ring = 0; ring < rings; ++ring) {
+    for(std::size_t t = 0; t < nt; ++t)
+      if(region[t])
+        for(auto v : mesh.tetrahedron_vertices(typename Tetrahedral_mesh_3<Traits>::Index(t))) marked[v] = 1;
+    for(std::size_t t = 0; t < nt; ++t)
+      for(auto v : mesh.tetrahedron_vertices(typename Tetrahedral_mesh_3<Traits>::Index(t)))
+        if(marked[v]) { region[t] = 1; break; }
+  }
+  return region;
 }
 
 } // namespace internal
