@@ -35,7 +35,7 @@ double peak_mib()
 struct Stage_timer : HR::Integer_grid_map_visitor
 {
   std::map<std::string, double> seconds;
-  void end_stage(const std::string& stage, double s) { seconds[stage] = s; }
+  void end_stage(const std::string& stage, double s) { seconds[stage] += s; } // the untangling may run twice
 };
 
 const std::vector<std::string> stages = {"cut", "reduction", "elimination", "rounding", "stiffening", "untangling", "sanitizing"};

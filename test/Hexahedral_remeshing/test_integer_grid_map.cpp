@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -642,6 +643,9 @@ const Shared_model shared_model_table[] = {
   {"mambo/B80", HR::Integer_grid_map_status::OK, {0, 0, 0, 0}, ""},
   {"mambo/M1", HR::Integer_grid_map_status::OK, {0, 0, 0, 0}, ""},
 };
+
+// the model's name in the test's description (ctest shows it), not the struct's bytes
+void PrintTo(const Shared_model& model, std::ostream* os) { *os << model.name; }
 
 class SharedModel : public ::testing::TestWithParam<Shared_model>
 {};
