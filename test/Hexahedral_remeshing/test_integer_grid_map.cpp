@@ -4,6 +4,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
 #include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
@@ -30,6 +31,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <tuple>
 
 namespace HR = CGAL::Hexahedral_remeshing;
 typedef HR::Tetrahedral_mesh_3<> Mesh;
@@ -207,6 +209,22 @@ Map_run run(const Mesh& m, const NP& np = CGAL::parameters::default_values())
   r.report = HR::compute_integer_grid_map(m, r.field, r.map, np);
   r.check = check_map(m, r.map, r.field.valences, r.field.singularities);
   return r;
+}
+
+// The library's comparison of the map's boundary valences with the prescribed ones
+// (check_integer_grid_map() + boundary_valence_agreement()) counts what the checker of this file counts
+// where valences are well defined (no inverted or flat tetrahedron: the library counts inverted ones
+// negatively and leaves flat ones out, this file takes unsigned angles).
+void expect_same_valence_agreement(const Mesh& m, const Map_run& r)
+{
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, int> > prescribed;
+  for(Index e : m.boundary_edges())
+    prescribed.emplace_back(std::uint32_t(m.edge_vertices(e)[0]), std::uint32_t(m.edge_vertices(e)[1]), r.field.valences[e]);
+  const HR::Boundary_valence_agreement a = HR::boundary_valence_agreement(HR::check_integer_grid_map(r.map), prescribed);
+  EXPECT_EQ(a.total, r.check.boundary_edges);
+  EXPECT_EQ(a.missing, 0u);
+  if(r.check.inverted == 0 && r.check.degenerate == 0)
+    EXPECT_EQ(a.matched, r.check.boundary_edges - r.check.valence_mismatches);
 }
 
 } // namespace
@@ -483,6 +501,18 @@ TEST(IntegerGridMap, LPrismConcaveEdgeHasValenceThree)
   EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
   expect_valid(r.check);
   EXPECT_NEAR(r.check.parameter_volume, 3.0 * 4 * 4 * 4, 1e-9);
+  expect_same_valence_agreement(m, r);
+  // a wrong prescribed valence and an edge that is not on the map's boundary are told apart
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, int> > prescribed;
+  for(Index e : m.boundary_edges())
+    prescribed.emplace_back(std::uint32_t(m.edge_vertices(e)[0]), std::uint32_t(m.edge_vertices(e)[1]), r.field.valences[e]);
+  std::get<2>(prescribed.front()) += 1;
+  prescribed.emplace_back(0u, std::uint32_t(m.number_of_vertices()), 2);
+  const HR::Boundary_valence_agreement a = HR::boundary_valence_agreement(HR::check_integer_grid_map(r.map), prescribed);
+  EXPECT_EQ(a.total, m.boundary_edges().size() + 1);
+  EXPECT_EQ(a.matched, m.boundary_edges().size() - 1);
+  EXPECT_EQ(a.missing, 1u);
+  EXPECT_EQ(a.at_degenerate_tetrahedra, 0u);
 }
 
 // Known deviations of the singular models: the test fails if a count gets worse. Whatever the
@@ -659,6 +689,7 @@ TEST_P(SharedModel, MapDoesNotGetWorse)
   const Mesh m = load(file);
   const Map_run r = run(m);
   print(model.name, r);
+  expect_same_valence_agreement(m, r);
   EXPECT_LE(int(r.report.status), int(model.status));
   expect_at_most(r.check, model.known);
 }

@@ -74,9 +74,21 @@ run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahe
   }
 }
 
+// The boundary edges of the map that have the valence given to them by the frame-field stage.
+inline CGAL::Hexahedral_remeshing::Boundary_valence_agreement
+map_valence_agreement(const Mesh& mesh, const std::vector<int>& valences, const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
+{
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, int> > prescribed;
+  prescribed.reserve(mesh.boundary_edges().size());
+  for(const auto e : mesh.boundary_edges())
+    prescribed.emplace_back(std::uint32_t(mesh.edge_vertices(e)[0]), std::uint32_t(mesh.edge_vertices(e)[1]), valences[e]);
+  return CGAL::Hexahedral_remeshing::boundary_valence_agreement(c, prescribed);
+}
+
 // The map block of the JSON reports of parametrize and remesh.
 inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
-                                 const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
+                                 const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c,
+                                 const CGAL::Hexahedral_remeshing::Boundary_valence_agreement& a)
 {
   json.begin("integer_grid_map")
       .value("status", CGAL::Hexahedral_remeshing::status_name(m.status))
@@ -107,12 +119,16 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("max_boundary_deviation", c.max_boundary_deviation)
       .matrix("interior_edge_valences", interior)
       .matrix("boundary_edge_valences", boundary)
+      .value("boundary_valences_total", a.total)
+      .value("boundary_valences_matched", a.matched)
+      .value("boundary_valences_at_degenerate_tetrahedra", a.at_degenerate_tetrahedra)
       .end();
   json.end();
 }
 
 inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
-                                   const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c)
+                                   const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c,
+                                   const CGAL::Hexahedral_remeshing::Boundary_valence_agreement& a)
 {
   out << "  integer-grid map    " << CGAL::Hexahedral_remeshing::status_name(m.status) << ": hex edge " << m.target_edge_length
       << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, min det J "
@@ -120,6 +136,8 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
       << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
       << "  map check           " << (c.is_integer_grid() ? "integer-grid" : "NOT integer-grid") << ", interior edges by valence "
       << valence_list(c.interior_edge_valences) << "; boundary edges by valence " << valence_list(c.boundary_edge_valences)
+      << "; boundary valences of the map " << a.matched << "/" << a.total << " as prescribed"
+      << (a.at_degenerate_tetrahedra ? " (" + std::to_string(a.at_degenerate_tetrahedra) + " others next to degenerate tetrahedra)" : std::string())
       << "\n"
       << "  map defects         " << m.jogs << " singular jogs (" << m.degenerate_jogs << " degenerate), " << m.disagreeing_faces
       << " faces where frames and matchings disagree, " << m.defects.size() << " non-meshable singularities\n";
@@ -151,6 +169,7 @@ inline int command_parametrize(const Arguments& args)
   const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress);
   progress.start("checking the map");
   const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
+  const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, f.valences, check);
   progress.finish();
 
   // a map whose tetrahedra fold (or that the solver could not make) is a failed stage: only its JSON report
@@ -181,7 +200,7 @@ inline int command_parametrize(const Arguments& args)
         .value("matched", f.boundary_valences.matched)
         .value("mismatched", f.boundary_valences.mismatched)
         .end();
-    add_integer_grid_map(json, m, check);
+    add_integer_grid_map(json, m, check, agreement);
     json.begin("seconds")
         .value("read", read_seconds)
         .value("frame_field", f.seconds)
@@ -206,7 +225,7 @@ inline int command_parametrize(const Arguments& args)
               << f.singularities.number_of_curves(5) << " valence-5 singular curves, " << f.singularities.improper_edges
               << " improper edges; boundary valences " << f.boundary_valences.matched << "/" << f.boundary_valences.total
               << " as prescribed\n";
-    print_integer_grid_map(std::cout, m, check);
+    print_integer_grid_map(std::cout, m, check, agreement);
     std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", frame field "
               << f.seconds << ", map " << m.seconds << " (cut " << m.cut_seconds << ", reduction " << m.reduction_seconds
               << ", elimination " << m.elimination_seconds << ", rounding " << m.rounding_seconds << ", stiffening "

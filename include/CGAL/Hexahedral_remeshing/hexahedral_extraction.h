@@ -17,6 +17,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -87,6 +89,16 @@ struct Integer_grid_map_check
   double max_valence_deviation = 0.;
   /// Edges incident to a degenerate tetrahedron (their valence is not reliable).
   std::size_t edges_at_degenerate_tetrahedra = 0;
+  /// One boundary edge of the map with its valence (same sum as `boundary_edge_valences`).
+  struct Boundary_edge
+  {
+    std::array<std::uint32_t, 2> vertices; ///< vertex ids, ascending
+    int valence;
+    bool at_degenerate_tetrahedron;        ///< the valence is not reliable
+  };
+  /// Every boundary edge with its valence, sorted by vertex ids: compare with the prescribed valences
+  /// (`boundary_valence_agreement()`).
+  std::vector<Boundary_edge> boundary_edges;
 
   /// True when the transitions and the boundary planes are integer within `tolerance`.
   bool is_integer_grid(double tolerance = 1e-3) const
@@ -168,10 +180,51 @@ inline Integer_grid_map_check check_integer_grid_map(const Integer_grid_map& map
     const int valence = int(std::lround(v));
     if(at_degenerate[e]) ++check.edges_at_degenerate_tetrahedra;
     else check.max_valence_deviation = (std::max)(check.max_valence_deviation, std::abs(v - valence));
-    if(topo.edge_on_boundary[e]) ++check.boundary_edge_valences[valence];
-    else ++check.interior_edge_valences[valence];
+    if(topo.edge_on_boundary[e]) {
+      ++check.boundary_edge_valences[valence];
+      check.boundary_edges.push_back({topo.edges[e], valence, at_degenerate[e] != 0});
+    } else {
+      ++check.interior_edge_valences[valence];
+    }
   }
+  std::sort(check.boundary_edges.begin(), check.boundary_edges.end(),
+            [](const auto& a, const auto& b) { return a.vertices < b.vertices; });
   return check;
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// How many boundary edges of a map have the prescribed valence (`boundary_valence_agreement()`).
+struct Boundary_valence_agreement
+{
+  /// Boundary edges with a prescribed valence.
+  std::size_t total = 0;
+  /// Those whose valence in the map (parameter-space angle sum / (pi/2)) is the prescribed one.
+  std::size_t matched = 0;
+  /// Those of the others next to a degenerate tetrahedron of the map (their valence is not reliable).
+  std::size_t at_degenerate_tetrahedra = 0;
+  /// Prescribed edges that are not boundary edges of the map (a map of another mesh).
+  std::size_t missing = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Compares the boundary valences of a map (from `check_integer_grid_map()`) with prescribed ones:
+/// `prescribed` lists (vertex id, vertex id, valence) triples, e.g. every boundary edge of the
+/// tetrahedral mesh with its valence from `compute_boundary_edge_valences()`.
+inline Boundary_valence_agreement
+boundary_valence_agreement(const Integer_grid_map_check& check,
+                           const std::vector<std::tuple<std::uint32_t, std::uint32_t, int> >& prescribed)
+{
+  Boundary_valence_agreement a;
+  for(const auto& [v0, v1, valence] : prescribed) {
+    ++a.total;
+    const std::array<std::uint32_t, 2> key = {(std::min)(v0, v1), (std::max)(v0, v1)};
+    const auto it = std::lower_bound(check.boundary_edges.begin(), check.boundary_edges.end(), key,
+                                     [](const auto& e, const std::array<std::uint32_t, 2>& k) { return e.vertices < k; });
+    if(it == check.boundary_edges.end() || it->vertices != key) { ++a.missing; continue; }
+    if(it->valence == valence) ++a.matched;
+    else if(it->at_degenerate_tetrahedron) ++a.at_degenerate_tetrahedra;
+  }
+  return a;
 }
 
 /// \ingroup PkgHexahedralRemeshingRef
