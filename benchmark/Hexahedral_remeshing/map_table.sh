@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# One row per model: `hexmesh parametrize` (prescribed valences, the map that `hexmesh remesh` extracts) on
+# every model of ../shared/data (or the files given): tetrahedra, map status, singular curves, jogs, inverted
+# and flat tetrahedra, boundary valences of the map as prescribed (parameter-space angle sums), integer
+# variables, seconds per step and peak memory (GNU time). The issue-9 table.
+#   benchmark/Hexahedral_remeshing/map_table.sh [--timeout S] [FILE...]
+# Needs a build (scripts/build) and python3; writes the JSON reports under build/map_table/.
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build="${BUILD_DIR:-$root/build}"
+hexmesh="$build/examples/Hexahedral_remeshing/hexmesh"
+out="$build/map_table"
+limit=600; files=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --timeout) limit="$2"; shift ;;
+    *) files+=("$1") ;;
+  esac
+  shift
+done
+if [ ${#files[@]} -eq 0 ]; then
+  for f in "$root"/../shared/data/hexme/*.vtk "$root"/../shared/data/mambo/*.vtk; do [ -e "$f" ] && files+=("$f"); done
+fi
+mkdir -p "$out"
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
+printf '%-28s %7s %-26s %5s %4s %9s %6s %6s %13s %4s %7s %7s %7s %7s %7s %7s %6s\n' model tets status "v3/v5" impr \
+  "jogs(deg)" inv flat "map valences" int field_s elim_s round_s stiff_s untan_s map_s peakMB
+for f in "${files[@]}"; do
+  name=$(basename "$f" .vtk)
+  json="$out/$name.json"; rm -f "$json"
+  /usr/bin/time -f '%M' -o "$out/$name.mem" timeout "$limit" "$hexmesh" parametrize "$f" --quiet \
+    --hexex "$out/$name.hexex" --json "$json" > /dev/null 2> "$out/$name.err"
+  rc=$?
+  python3 - "$json" "$out/$name.mem" "$name" "$rc" "$out/$name.err" <<'PY'
+import json, os, sys
+path, mem, name, rc, err = sys.argv[1:]
+try: peak = int(open(mem).read().split()[-1]) / 1024
+except Exception: peak = float('nan')
+if not os.path.exists(path):
+    msg = open(err).read().strip().splitlines()
+    print('%-28s %s' % (name, 'exit %s: %s' % (rc, msg[-1][:110] if msg else 'timeout')))
+    sys.exit(0)
+r = json.load(open(path))
+m, s, g = r['integer_grid_map'], r['seconds'], r['singularities']
+c = m['check']
+print('%-28s %7d %-26s %5s %4d %9s %6d %6d %13s %4d %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %6.0f' % (
+    name, r['tetrahedra'], m['status'], '%d/%d' % (g['valence3_curves'], g['valence5_curves']), g['improper_edges'],
+    '%d(%d)' % (m['jogs'], m['degenerate_jogs']), c['inverted_tetrahedra'], c['degenerate_tetrahedra'],
+    '%d/%d' % (c['boundary_valences_matched'], c['boundary_valences_total']), m['integer_variables'],
+    s['frame_field'], s['elimination'], s['rounding'], s['stiffening'], s['untangling'], s['map'], peak))
+PY
+done
