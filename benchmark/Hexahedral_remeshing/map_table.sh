@@ -6,23 +6,9 @@
 #   benchmark/Hexahedral_remeshing/map_table.sh [--timeout S] [FILE...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/map_table/.
 set -uo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${BUILD_DIR:-$root/build}"
-hexmesh="$build/examples/Hexahedral_remeshing/hexmesh"
+source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/map_table"
-limit=600; files=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --timeout) limit="$2"; shift ;;
-    *) files+=("$1") ;;
-  esac
-  shift
-done
-if [ ${#files[@]} -eq 0 ]; then
-  for f in "$root"/../shared/data/hexme/*.vtk "$root"/../shared/data/mambo/*.vtk; do [ -e "$f" ] && files+=("$f"); done
-fi
 mkdir -p "$out"
-export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
 printf '%-28s %7s %-26s %5s %4s %9s %6s %6s %13s %4s %7s %7s %7s %7s %7s %7s %6s\n' model tets status "v3/v5" impr \
   "jogs(deg)" inv flat "map valences" int field_s elim_s round_s stiff_s untan_s map_s peakMB
 for f in "${files[@]}"; do

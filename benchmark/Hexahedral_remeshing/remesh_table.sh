@@ -5,24 +5,9 @@
 #   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--timeout S] [FILE...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${BUILD_DIR:-$root/build}"
-hexmesh="$build/examples/Hexahedral_remeshing/hexmesh"
+source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/remesh_table"
-baseline=0; limit=600; files=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --baseline-too) baseline=1 ;;
-    --timeout) limit="$2"; shift ;;
-    *) files+=("$1") ;;
-  esac
-  shift
-done
-if [ ${#files[@]} -eq 0 ]; then
-  for f in "$root"/../shared/data/hexme/*.vtk "$root"/../shared/data/mambo/*.vtk; do [ -e "$f" ] && files+=("$f"); done
-fi
 mkdir -p "$out"
-export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
 modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline)
 printf '%-28s %-10s %8s %7s %-17s %6s %6s %9s %6s %9s %8s %8s %8s %8s %7s\n' model mode tets hexes status minSJ meanSJ \
   hausdorff cover valences field_s map_s extr_s smooth_s peakMB

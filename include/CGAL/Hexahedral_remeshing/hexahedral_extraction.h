@@ -93,7 +93,7 @@ struct Integer_grid_map_check
   struct Boundary_edge
   {
     std::array<std::uint32_t, 2> vertices; ///< vertex ids, ascending
-    int valence;
+    int valence;                           ///< angle sum / (pi/2), rounded
     bool at_degenerate_tetrahedron;        ///< the valence is not reliable
   };
   /// Every boundary edge with its valence, sorted by vertex ids: compare with the prescribed valences
