@@ -80,6 +80,7 @@ inline int command_remesh(const Arguments& args)
   } catch(const std::exception& e) {
     throw Stage_error(std::string("remeshing of ") + in + ": " + e.what());
   }
+  const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, r.frame_field.valences, r.map_check);
   const bool ok = r.status == HR::Hexahedral_remeshing_status::OK;
   const bool write_hexes = ok || (args.has("keep-partial") && hexes.number_of_hexahedra() > 0);
 
@@ -119,7 +120,7 @@ inline int command_remesh(const Arguments& args)
         .value("fixed_frames", f.fixed_frames.size())
         .value("redirected_directions", f.redirected_directions)
         .end();
-    add_integer_grid_map(json, r.map, r.map_check, map_valence_agreement(mesh, r.frame_field.valences, r.map_check));
+    add_integer_grid_map(json, r.map, r.map_check, agreement);
     json.begin("extraction")
         .value("hexahedra", r.extraction.hexahedra)
         .value("degenerate_tetrahedra", r.extraction.degenerate_tetrahedra)
@@ -171,7 +172,7 @@ inline int command_remesh(const Arguments& args)
                                          : "; " + std::to_string(f.fixed_frames.size()) +
                                              " frames fixed around acute valence-1 edges")
               << "\n";
-    print_integer_grid_map(std::cout, r.map, r.map_check, map_valence_agreement(mesh, r.frame_field.valences, r.map_check));
+    print_integer_grid_map(std::cout, r.map, r.map_check, agreement);
     if(hexes.number_of_hexahedra() > 0) {
       print_hexahedral_mesh_check(std::cout, r.check);
       std::cout << "  features            " << r.hex_feature_edges_with_prescribed_valence << "/" << r.hex_feature_edges

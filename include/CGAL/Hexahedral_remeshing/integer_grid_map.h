@@ -471,6 +471,7 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
     r.untangling_ran = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, v, &region).ran || r.untangling_ran;
     return true;
   };
+  // (a failed rounding leaves nothing to repair: its map is reported as it is)
   bool repaired = !q.success || folds(y) == 0;
   if(!repaired && untangle) {
     visitor.start_stage("untangling");
