@@ -4,9 +4,12 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_CONJUGATE_GRADIENTS_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_CONJUGATE_GRADIENTS_H
 
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/parallel_vector_operations.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace CGAL {
@@ -15,8 +18,8 @@ namespace internal {
 
 // Preconditioned conjugate gradients on A x = b from the given x, matrix-free: apply(v, Av) and
 // precondition(r, z) (z = M^-1 r, M symmetric positive definite). Stops at |b - A x| < tolerance |b|
-// or after max_iterations. The dot products are sequential, so the iterates do not depend on the
-// number of threads the operator uses. b is taken by value and becomes the residual (one vector
+// or after max_iterations. The vector operations are those of parallel_vector_operations.h, so the
+// iterates do not depend on the number of threads. b is taken by value and becomes the residual (one vector
 // of the size of the system less at the peak: move it in).
 // Preconditioner of the frame-field solves. AUTOMATIC: Jacobi below multigrid_minimum_tets
 // tetrahedra, where the multigrid's setup and its three operator products per iteration cost more
@@ -47,17 +50,24 @@ void preconditioned_conjugate_gradients(const Apply& apply, const Precondition& 
   precondition(r, z);
   Eigen::VectorXd d = z;
   double rz = r.dot(z);
+  const Eigen::Index n = r.size();
   while(iterations < max_iterations) {
     apply(d, Ax);
-    const double alpha = rz / d.dot(Ax);
-    x += alpha * d;
-    r -= alpha * Ax;
+    const double alpha = rz / parallel_dot(d, Ax);
+    const double rr = parallel_segment_sum(n, [&](Eigen::Index begin, Eigen::Index size) {
+      x.segment(begin, size) += alpha * d.segment(begin, size);
+      r.segment(begin, size) -= alpha * Ax.segment(begin, size);
+      return r.segment(begin, size).squaredNorm();
+    });
     ++iterations;
-    relative_residual = r.norm() / b_norm;
+    relative_residual = std::sqrt(rr) / b_norm;
     if(relative_residual < tolerance) break;
     precondition(r, z);
-    const double rz_new = r.dot(z);
-    d = z + (rz_new / rz) * d;
+    const double rz_new = parallel_dot(r, z);
+    const double beta = rz_new / rz;
+    for_each_segment(n, [&](Eigen::Index begin, Eigen::Index size) {
+      d.segment(begin, size) = z.segment(begin, size) + beta * d.segment(begin, size);
+    });
     rz = rz_new;
   }
 }

@@ -4,6 +4,8 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_PRECONDITIONED_LBFGS_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_PRECONDITIONED_LBFGS_H
 
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/parallel_vector_operations.h>
+
 #include <Eigen/Dense>
 #include <LBFGS.h>
 
@@ -37,11 +39,11 @@ int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::V
   // which the dot products s_i^T y_j of the stored pairs give without forming q.
   const Eigen::Index n = x.size();
   const int m = (std::max)(1, param.m);
-  struct Pair { Eigen::VectorXd s, y, Py; double rho = 0; };
+  struct Pair { Eigen::VectorXd s, y, Py; double rho = 0, yPy = 0; };
   std::vector<Pair> pairs(static_cast<std::size_t>(m));
   std::vector<std::size_t> order;            // slots of the stored pairs, oldest first
   Eigen::MatrixXd sy(m, m);                  // sy(i, j) = s_i^T y_j by slot
-  std::vector<double> alpha(static_cast<std::size_t>(m)), history;
+  std::vector<double> alpha(static_cast<std::size_t>(m)), c(static_cast<std::size_t>(m)), history, dots, dots_s;
   Eigen::VectorXd grad(n), Pg(n), direction(n);
   fx = f(x, grad);
   history.push_back(fx);
@@ -64,8 +66,8 @@ int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::V
     p.y = grad;
     p.Py = Pg;
     LBFGSpp::LineSearchNocedalWright<double>::LineSearch(f, fx, x, grad, step, direction, p.s, param);
-    const double gnorm = grad.norm();
-    if(gnorm <= param.epsilon || gnorm <= param.epsilon_rel * x.norm()) return k;
+    const double gnorm = std::sqrt(parallel_dot(grad, grad));
+    if(gnorm <= param.epsilon || gnorm <= param.epsilon_rel * std::sqrt(parallel_dot(x, x))) return k;
     if(param.past > 0 && k >= param.past) {
       const double f_past = history[std::size_t(k - param.past)];
       if(std::abs(f_past - fx) <= param.delta * (std::max)((std::max)(std::abs(fx), std::abs(f_past)), 1.0)) return k;
@@ -73,39 +75,65 @@ int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::V
     history.push_back(fx);
     if(param.max_iterations != 0 && k >= param.max_iterations) return k;
     precondition(grad, Pg);
-    p.s = x - p.s;
-    p.y = grad - p.y;
-    p.Py = Pg - p.Py;
-    const double s_y = p.s.dot(p.y);
+    for_each_segment(n, [&](Eigen::Index b, Eigen::Index size) {
+      p.s.segment(b, size) = x.segment(b, size) - p.s.segment(b, size);
+      p.y.segment(b, size) = grad.segment(b, size) - p.y.segment(b, size);
+      p.Py.segment(b, size) = Pg.segment(b, size) - p.Py.segment(b, size);
+    });
+    // every dot product of the iteration in three passes (parallel_vector_operations.h): the new
+    // pair's with the stored ones, s_i^T g for the first loop, y_i^T of the second loop's start
+    std::vector<const Eigen::VectorXd*> with_y = {&p.s, &p.y, &p.Py}, with_s;
+    for(std::size_t i : order) { with_y.push_back(&pairs[i].s); with_s.push_back(&pairs[i].y); }
+    parallel_dots(p.y, with_y, dots);
+    const double s_y = dots[0], y_y = dots[1], y_Py = dots[2];
     // the strong Wolfe conditions give s^T y > 0; a pair at the limit of the precision is dropped
-    if(s_y > 1e-16 * p.y.squaredNorm()) {
+    if(s_y > 1e-16 * y_y) {
+      parallel_dots(p.s, with_s, dots_s);
       p.rho = 1.0 / s_y;
-      for(std::size_t i : order) {
-        sy(Eigen::Index(i), Eigen::Index(slot)) = pairs[i].s.dot(p.y);
-        sy(Eigen::Index(slot), Eigen::Index(i)) = p.s.dot(pairs[i].y);
+      p.yPy = y_Py;
+      for(std::size_t a = 0; a < order.size(); ++a) {
+        sy(Eigen::Index(order[a]), Eigen::Index(slot)) = dots[3 + a];
+        sy(Eigen::Index(slot), Eigen::Index(order[a])) = dots_s[a];
       }
       sy(Eigen::Index(slot), Eigen::Index(slot)) = s_y;
       order.push_back(slot);
     }
-    // two-loop recursion (Alg. 7.4) with H0 = gamma P; direction holds P q, then H g
-    direction = Pg;
+    // two-loop recursion (Alg. 7.4) with H0 = gamma P. First loop: alpha_i from s_i^T g and the
+    // stored s_i^T y_j; direction = gamma (P g - sum_i alpha_i P y_i).
+    std::vector<const Eigen::VectorXd*> vs, vy, vPy;
+    for(std::size_t i : order) { vs.push_back(&pairs[i].s); vy.push_back(&pairs[i].y); vPy.push_back(&pairs[i].Py); }
+    parallel_dots(grad, vs, dots);
     for(std::size_t a = order.size(); a-- > 0;) {
       const std::size_t i = order[a];
-      double s_q = pairs[i].s.dot(grad);
+      double s_q = dots[a];
       for(std::size_t b = a + 1; b < order.size(); ++b) s_q -= alpha[order[b]] * sy(Eigen::Index(i), Eigen::Index(order[b]));
       alpha[i] = pairs[i].rho * s_q;
-      direction -= alpha[i] * pairs[i].Py;
     }
+    double gamma = 1;
     if(!order.empty()) {
       const Pair& newest = pairs[order.back()];
-      const double yPy = newest.y.dot(newest.Py);
-      if(yPy > 0) direction *= 1.0 / (newest.rho * yPy);
+      if(newest.yPy > 0) gamma = 1.0 / (newest.rho * newest.yPy);
     }
-    for(std::size_t i : order) {
-      const double beta = pairs[i].rho * pairs[i].y.dot(direction);
-      direction += (alpha[i] - beta) * pairs[i].s;
+    for_each_segment(n, [&](Eigen::Index b, Eigen::Index size) {
+      auto d = direction.segment(b, size);
+      d = Pg.segment(b, size);
+      for(std::size_t a = 0; a < order.size(); ++a) d -= alpha[order[a]] * vPy[a]->segment(b, size);
+      d *= gamma;
+    });
+    // Second loop: beta_i = rho_i y_i^T (r0 + sum_{j < i} c_j s_j), c_j = alpha_j - beta_j, from
+    // y_i^T r0 and the stored s_j^T y_i; then direction = -(r0 + sum_i c_i s_i) in one pass.
+    parallel_dots(direction, vy, dots);
+    for(std::size_t a = 0; a < order.size(); ++a) {
+      const std::size_t i = order[a];
+      double y_r = dots[a];
+      for(std::size_t b = 0; b < a; ++b) y_r += c[b] * sy(Eigen::Index(order[b]), Eigen::Index(i));
+      c[a] = alpha[i] - pairs[i].rho * y_r;
     }
-    direction = -direction;
+    for_each_segment(n, [&](Eigen::Index b, Eigen::Index size) {
+      auto d = direction.segment(b, size);
+      for(std::size_t a = 0; a < order.size(); ++a) d += c[a] * vs[a]->segment(b, size);
+      d = -d;
+    });
     step = 1.0;
   }
 }
