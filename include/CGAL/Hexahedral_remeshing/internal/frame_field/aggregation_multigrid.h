@@ -4,6 +4,8 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_AGGREGATION_MULTIGRID_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_FRAME_FIELD_AGGREGATION_MULTIGRID_H
 
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/parallel_vector_operations.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -154,7 +156,9 @@ public:
     const Level& c = m_levels.front();
     if(c.nodes == 0) return;
     m_fine.apply(z, m_fine_work);
-    m_fine_work = r - m_fine_work;
+    for_each_segment(n, [&](Eigen::Index b, Eigen::Index size) {
+      m_fine_work.segment(b, size) = r.segment(b, size) - m_fine_work.segment(b, size);
+    });
     restrict_from_fine(m_fine_work, c.b);
     cycle(0);
     prolong_to_fine(c.x, z);
@@ -582,16 +586,39 @@ private:
       }
       return;
     }
+    // l1-Jacobi sweeps x += D^-1 (b - A x), from x = D^-1 b; elementwise updates, so the same in parallel
     const int sweeps = 2;
-    L.x = L.inv_l1.cwiseProduct(L.b);
-    for(int s = 1; s < sweeps; ++s) { L.A.multiply(L.x, L.work); L.x += L.inv_l1.cwiseProduct(L.b - L.work); }
+    const Eigen::Index rows = Eigen::Index(9 * L.nodes);
+    auto sweep = [&]() {
+      L.A.multiply(L.x, L.work);
+      for_each_segment(rows, [&](Eigen::Index b, Eigen::Index size) {
+        L.x.segment(b, size) += L.inv_l1.segment(b, size).cwiseProduct(L.b.segment(b, size) - L.work.segment(b, size));
+      });
+    };
+    L.x.resize(rows);
+    for_each_segment(rows, [&](Eigen::Index b, Eigen::Index size) {
+      L.x.segment(b, size) = L.inv_l1.segment(b, size).cwiseProduct(L.b.segment(b, size));
+    });
+    for(int s = 1; s < sweeps; ++s) sweep();
     L.A.multiply(L.x, L.work);
-    L.work = L.b - L.work;
+    for_each_segment(rows, [&](Eigen::Index b, Eigen::Index size) {
+      L.work.segment(b, size) = L.b.segment(b, size) - L.work.segment(b, size);
+    });
+    // restriction, gathered per aggregate over its members in increasing order (as a scatter in
+    // node order would add them), so in parallel
     const Level& C = m_levels[k + 1];
-    C.b.setZero(Eigen::Index(9 * C.nodes));
-    for(std::size_t i = 0; i < L.nodes; ++i) {
-      const Signed_permutation_9& H = C.gauge[i];
-      for(int r = 0; r < 9; ++r) C.b[9 * Eigen::Index(C.parent[i]) + H.perm[r]] += H.sign[r] * L.work[9 * Eigen::Index(i) + r];
+    C.b.resize(Eigen::Index(9 * C.nodes));
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for(std::ptrdiff_t a = 0; a < std::ptrdiff_t(C.nodes); ++a) {
+      Vector9 sum = Vector9::Zero();
+      for(std::size_t m = C.member_start[a]; m < C.member_start[a + 1]; ++m) {
+        const std::size_t i = C.members[m];
+        const Signed_permutation_9& H = C.gauge[i];
+        for(int r = 0; r < 9; ++r) sum[H.perm[r]] += H.sign[r] * L.work[9 * Eigen::Index(i) + r];
+      }
+      C.b.segment<9>(9 * a) = sum;
     }
     cycle(k + 1);
 #ifdef _OPENMP
@@ -601,7 +628,7 @@ private:
       const Signed_permutation_9& H = C.gauge[i];
       for(int r = 0; r < 9; ++r) L.x[9 * i + r] += H.sign[r] * C.x[9 * Eigen::Index(C.parent[i]) + H.perm[r]];
     }
-    for(int s = 0; s < sweeps; ++s) { L.A.multiply(L.x, L.work); L.x += L.inv_l1.cwiseProduct(L.b - L.work); }
+    for(int s = 0; s < sweeps; ++s) sweep();
   }
 
   Multigrid_fine_system m_fine;
