@@ -310,8 +310,14 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     std::move(b), x, tolerance, 20000, result.solver_iterations, result.solver_residual);
   expand(x, E, true);
 
-  // Projection to rotations (t: the solver's tet, frame: the mesh's).
-  for(std::size_t t = 0; t < nt; ++t) {
+  // Projection to rotations (t: the solver's tet, frame: the mesh's), independent per tet; the
+  // errors are maxima, the same in any order.
+  double constraint_error = 0, alignment_error = 0;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) reduction(max : constraint_error, alignment_error)
+#endif
+  for(std::ptrdiff_t ti = 0; ti < std::ptrdiff_t(nt); ++ti) {
+    const std::size_t t = std::size_t(ti);
     Eigen::Matrix3d& frame = frames[mesh_tet(t)];
     if(!is_constrained(t)) {
       Eigen::JacobiSVD<Eigen::Matrix3d> svd(E[t], Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -324,7 +330,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     const Eigen::Vector3d& nrm = normals[bt];
     double s = 1;
     const int k = internal::aligned_axis(frame, directions[bt].normalized(), s);
-    result.constraint_error = (std::max)(result.constraint_error, (nrm.transpose() * E[t] - directions[bt].normalized().transpose() * frame).cwiseAbs().maxCoeff());
+    constraint_error = (std::max)(constraint_error, (nrm.transpose() * E[t] - directions[bt].normalized().transpose() * frame).cwiseAbs().maxCoeff());
     const int a = (k + 1) % 3, c = (k + 2) % 3;
     // 2D Procrustes of columns a and c inside the tangent plane, keeping a right-handed frame
     const Matrix32& B = T[t];
@@ -346,8 +352,10 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     R.col(c) = B * Q.col(1);
     frame = R;
     const Eigen::Vector3d check = R.transpose() * nrm;
-    result.alignment_error = (std::max)(result.alignment_error, std::abs(1.0 - check.cwiseAbs().maxCoeff()));
+    alignment_error = (std::max)(alignment_error, std::abs(1.0 - check.cwiseAbs().maxCoeff()));
   }
+  result.constraint_error = (std::max)(result.constraint_error, constraint_error);
+  result.alignment_error = (std::max)(result.alignment_error, alignment_error);
 
   // Post-checks: matchings and singular graph must be unchanged.
   const Matchings after = compute_matchings(mesh, frames);
