@@ -6,6 +6,7 @@
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/aggregation_multigrid.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/conjugate_gradients.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/parallel_vector_operations.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/preconditioned_lbfgs.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/smoothing.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
@@ -497,6 +498,56 @@ TEST(FrameFieldSolvers, RotationLaplacianIsTheSmoothingHessianAtASmoothField)
   smoother.apply_rotation_laplacian(v, Lv);
   // Lv includes mu v, mu = 1e-8: far below the differences' error
   EXPECT_LT((Hv - (40.0 / 3.0) * Lv).norm(), 1e-5 * Hv.norm());
+}
+
+// The solvers' vector operations: Eigen's own below parallel_vector_minimum entries (small meshes
+// keep their results), above it sums of fixed blocks in block order, so bitwise the same with 1 and
+// 2 threads, and within rounding of the sequential sums (a compensated sum is the reference).
+TEST(FrameFieldSolvers, ParallelVectorOperationsAreDeterministic)
+{
+  namespace I = HR::internal;
+  auto reference_dot = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    long double s = 0;
+    for(Eigen::Index i = 0; i < a.size(); ++i) s += (long double)a[i] * (long double)b[i];
+    return double(s);
+  };
+  for(const Eigen::Index n : {Eigen::Index(1000), I::parallel_vector_minimum - 1, I::parallel_vector_minimum,
+                              2 * I::parallel_vector_minimum + 12345}) {
+    const Eigen::VectorXd u = Eigen::VectorXd::Random(n), v = Eigen::VectorXd::Random(n), w = Eigen::VectorXd::Random(n);
+    std::vector<double> one, two;
+    double sum_one = 0, sum_two = 0;
+    Eigen::VectorXd x_one = u, x_two = u;
+    for(int threads : {1, 2}) {
+#ifdef _OPENMP
+      const int saved = omp_get_max_threads();
+      omp_set_num_threads(threads);
+#endif
+      std::vector<double>& d = threads == 1 ? one : two;
+      I::parallel_dots(u, {&v, &w, &u}, d);
+      Eigen::VectorXd& x = threads == 1 ? x_one : x_two;
+      (threads == 1 ? sum_one : sum_two) = I::parallel_segment_sum(n, [&](Eigen::Index b, Eigen::Index size) {
+        x.segment(b, size) += 0.5 * v.segment(b, size);
+        return x.segment(b, size).squaredNorm();
+      });
+#ifdef _OPENMP
+      omp_set_num_threads(saved);
+#endif
+    }
+    ASSERT_EQ(one.size(), 3u);
+    EXPECT_TRUE(one == two) << n;
+    EXPECT_EQ(sum_one, sum_two) << n;
+    EXPECT_TRUE(x_one == x_two) << n;
+    const Eigen::VectorXd x = u + 0.5 * v;
+    EXPECT_TRUE(x_one == x) << n; // an elementwise update is the same however it is split
+    EXPECT_NEAR(one[0], reference_dot(u, v), 1e-12 * double(n));
+    EXPECT_NEAR(one[1], reference_dot(u, w), 1e-12 * double(n));
+    EXPECT_NEAR(one[2], reference_dot(u, u), 1e-12 * double(n));
+    EXPECT_NEAR(sum_one, reference_dot(x, x), 1e-12 * double(n));
+    if(!I::use_parallel_vector_operations(n)) {
+      EXPECT_EQ(one[0], u.dot(v)) << n; // Eigen's own
+      EXPECT_EQ(sum_one, x.squaredNorm()) << n;
+    }
+  }
 }
 
 // The smoothing preconditioned by the multigrid reaches a field as smooth as plain L-BFGS (both are
