@@ -80,8 +80,8 @@ int preconditioned_lbfgs(Function& f, const Precondition& precondition, Eigen::V
       p.y.segment(b, size) = grad.segment(b, size) - p.y.segment(b, size);
       p.Py.segment(b, size) = Pg.segment(b, size) - p.Py.segment(b, size);
     });
-    // every dot product of the iteration in three passes (parallel_vector_operations.h): the new
-    // pair's with the stored ones, s_i^T g for the first loop, y_i^T of the second loop's start
+    // every dot product of the iteration in four passes (parallel_vector_operations.h): the new
+    // pair's y and s with the stored pairs, s_i^T g for the first loop, y_i^T of the second loop's start
     std::vector<const Eigen::VectorXd*> with_y = {&p.s, &p.y, &p.Py}, with_s;
     for(std::size_t i : order) { with_y.push_back(&pairs[i].s); with_s.push_back(&pairs[i].y); }
     parallel_dots(p.y, with_y, dots);
