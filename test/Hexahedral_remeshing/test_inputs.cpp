@@ -210,6 +210,18 @@ TEST(Surfaces, TetGenBoundsThatWouldNotTerminateAreRefused)
   const std::string what = error_of(inputs + "cavity.off", HR::parameters::radius_edge_ratio(0.5));
   EXPECT_TRUE(contains(what, "radius-edge ratio must be 0 (no refinement) or at least 1")) << what;
   EXPECT_NEAR(volume(read(inputs + "cavity.off", HR::parameters::radius_edge_ratio(0))), 26.0, 1e-9);
+  // a 2000-long spike: the default quality bound refines without end near its tip (found by the fuzzer,
+  // which timed out); the Steiner points are bounded (100 per surface vertex) and that is an error
+  const std::string spike = error_of(inputs + "spike.off");
+  EXPECT_TRUE(contains(spike, "quality refinement does not terminate on this surface: it stopped at 800 added points"))
+      << spike;
+  EXPECT_TRUE(contains(spike, "radius-edge ratio 0")) << spike;
+  // without refinement it is meshed: 667.4667 is the divergence theorem on its 12 triangles
+  EXPECT_NEAR(volume(read(inputs + "spike.off", HR::parameters::radius_edge_ratio(0))), 667.46666666666667, 1e-9);
+  // the bound grows with the volume bound: 10 per bound in the bounding box (1.2 x 2001 x 1 / 100)
+  const std::string bounded = error_of(inputs + "spike.off", HR::parameters::maximum_tetrahedron_volume(100.));
+  EXPECT_TRUE(contains(bounded, "it stopped at 1040 added points (100 per surface vertex and 10 per volume bound"))
+      << bounded;
 }
 
 TEST(Surfaces, CrashOfAnIsolatedLibraryIsAnInputError)

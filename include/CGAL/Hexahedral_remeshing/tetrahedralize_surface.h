@@ -11,6 +11,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -29,6 +30,7 @@
 #endif
 #include <tetgen.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -134,6 +136,11 @@ inline bool check_and_orient_surface(Checked_surface& sm, const std::string& sou
   return false;
 }
 
+// Bound on TetGen's Steiner points (switch S), per surface vertex and per volume bound
+// (maximum_tetrahedron_volume) in the bounding box of the surface.
+constexpr double steiner_points_per_surface_vertex = 100;
+constexpr double steiner_points_per_volume_bound = 10;
+
 inline std::string tetgen_error(int code)
 {
   switch(code) {
@@ -193,11 +200,25 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
   for(SM::Face_index f : sm.faces())
     for(SM::Vertex_index v : vertices_around_face(sm.halfedge(f), sm)) triangles.push_back(vindex[v]);
 
+  // TetGen's quality refinement need not terminate near very acute angles of the surface (a spike,
+  // a thin sliver of volume: a 2000:1 box never stops). Its Steiner points are bounded far above
+  // what a surface that it can mesh needs (the surfaces of 42 CAD parts, hexme and MAMBO: at most 3.2 per
+  // surface vertex, 0.7 per volume bound of the bounding box), and reaching the bound is an error.
+  const std::size_t surface_vertices = coords.size() / 3;
+  double steiner_bound = internal::steiner_points_per_surface_vertex * double(surface_vertices);
+  if(max_volume > 0) {
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(sm);
+    steiner_bound += internal::steiner_points_per_volume_bound * (box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) *
+                     (box.zmax() - box.zmin()) / max_volume;
+  }
+  // TetGen counts them in an int
+  const long steiner_limit = long(std::min(steiner_bound, 2.0e9));
   std::ostringstream sw;
   sw << "pzQ";
   if(preserve) sw << "Y";
   if(ratio > 0) sw << "q" << ratio;
   if(max_volume > 0) sw << "a" << max_volume;
+  sw << "S" << steiner_limit;
   const std::string switches = sw.str();
 
   // TetGen runs in a child process: the checks above keep it from the inputs known to crash it,
@@ -244,6 +265,14 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
   Tetrahedral_soup_3<Point> result;
   internal::deserialize_soup(bytes, result);
   if(result.tetrahedra.empty()) throw Input_error(source, 0, "TetGen produced no tetrahedra");
+  if(long(result.points.size() - surface_vertices) >= steiner_limit)
+    throw Input_error(source, 0, "TetGen's quality refinement does not terminate on this surface: it stopped at " +
+                      std::to_string(steiner_limit) + " added points (" +
+                      std::to_string(long(internal::steiner_points_per_surface_vertex)) + " per surface vertex" +
+                      (max_volume > 0 ? std::string(" and ") + std::to_string(long(internal::steiner_points_per_volume_bound)) +
+                                        " per volume bound in the bounding box" : std::string()) +
+                      "); a very acute angle (a spike or a thin sliver of volume) makes it refine without end: "
+                      "remove it, or turn the refinement off (radius-edge ratio 0) or loosen it (a larger ratio)");
   for(const auto& t : result.tetrahedra)
     for(std::size_t v : t)
       if(v >= result.points.size()) throw Error("internal error: TetGen returned an index out of range");
@@ -323,8 +352,10 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
 /// \cgalNamedParamsEnd
 /// \throws Input_error naming `soup.source`, the problem, an example location and what to do, if the
 ///         surface is empty, not closed, not manifold, has zero-area triangles, intersects itself
-///         (or two shells touch), if TetGen fails or crashes, or for a radius-edge ratio in (0, 1)
-///         (TetGen would not terminate) or a negative volume bound.
+///         (or two shells touch), if TetGen fails or crashes, if its quality refinement does not terminate
+///         (it reaches 100 added points per surface vertex plus 10 per `maximum_tetrahedron_volume` in the
+///         bounding box: a very acute angle), or for a radius-edge ratio in (0, 1) (TetGen would not terminate)
+///         or a negative volume bound.
 template <class FaceListGraph, class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void tetrahedralize_surface(const FaceListGraph& surface, Tetrahedral_soup_3<Point>& soup,
                             const NamedParameters& np = CGAL::parameters::default_values())

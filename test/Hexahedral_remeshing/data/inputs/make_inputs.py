@@ -98,6 +98,10 @@ def surfaces():
         tris.append(tuple(remap[v - 8] if v - 8 in remap else 8 + [i for i in range(8) if i not in (0, 4)].index(v - 8)
                           for v in t))
     write_off("shared_edge.off", pts, tris)
+    # a cube with corner 7 pulled out 2000 units (a thin spike): TetGen's quality refinement does not end near its tip
+    pts = cube_points()
+    pts[7] = (1.2, 2001.0, 0.2)
+    write_off("spike.off", pts, cube_triangles())
 
 
 def vtk_cells(cells, types):
