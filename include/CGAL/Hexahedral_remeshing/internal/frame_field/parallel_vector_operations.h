@@ -26,29 +26,35 @@ constexpr Eigen::Index parallel_vector_minimum = Eigen::Index(1) << 18;
 
 inline bool use_parallel_vector_operations(Eigen::Index n) { return n >= parallel_vector_minimum; }
 
-// dots[i] = u . v[i] for every i, in one pass over u.
-inline void parallel_dots(const Eigen::VectorXd& u, const std::vector<const Eigen::VectorXd*>& v, std::vector<double>& dots)
+// sums[i] = the sum over consecutive segments covering [0, n) of the i-th of the k sums that
+// f(begin, size, out) writes to out[0..k), in parallel over the segments, then summed in segment order.
+template <class F>
+void parallel_block_sums(Eigen::Index n, std::size_t k, const F& f, std::vector<double>& sums)
 {
-  const std::size_t k = v.size();
-  dots.assign(k, 0.);
-  if(k == 0) return;
-  const Eigen::Index n = u.size();
-  if(!use_parallel_vector_operations(n)) {
-    for(std::size_t i = 0; i < k; ++i) dots[i] = u.dot(*v[i]);
-    return;
-  }
+  sums.assign(k, 0.);
   const Eigen::Index blocks = (n + vector_block - 1) / vector_block;
   std::vector<double> partial(std::size_t(blocks) * k);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-  for(Eigen::Index b = 0; b < blocks; ++b) {
-    const Eigen::Index begin = b * vector_block, size = (std::min)(vector_block, n - begin);
-    for(std::size_t i = 0; i < k; ++i)
-      partial[std::size_t(b) * k + i] = u.segment(begin, size).dot(v[i]->segment(begin, size));
-  }
   for(Eigen::Index b = 0; b < blocks; ++b)
-    for(std::size_t i = 0; i < k; ++i) dots[i] += partial[std::size_t(b) * k + i];
+    f(b * vector_block, (std::min)(vector_block, n - b * vector_block), &partial[std::size_t(b) * k]);
+  for(Eigen::Index b = 0; b < blocks; ++b)
+    for(std::size_t i = 0; i < k; ++i) sums[i] += partial[std::size_t(b) * k + i];
+}
+
+// dots[i] = u . v[i] for every i, in one pass over u.
+inline void parallel_dots(const Eigen::VectorXd& u, const std::vector<const Eigen::VectorXd*>& v, std::vector<double>& dots)
+{
+  const std::size_t k = v.size();
+  if(!use_parallel_vector_operations(u.size())) {
+    dots.assign(k, 0.);
+    for(std::size_t i = 0; i < k; ++i) dots[i] = u.dot(*v[i]);
+    return;
+  }
+  parallel_block_sums(u.size(), k, [&](Eigen::Index begin, Eigen::Index size, double* out) {
+    for(std::size_t i = 0; i < k; ++i) out[i] = u.segment(begin, size).dot(v[i]->segment(begin, size));
+  }, dots);
 }
 
 inline double parallel_dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v)
@@ -78,16 +84,9 @@ template <class F>
 double parallel_segment_sum(Eigen::Index n, const F& f)
 {
   if(!use_parallel_vector_operations(n)) return f(Eigen::Index(0), n);
-  const Eigen::Index blocks = (n + vector_block - 1) / vector_block;
-  std::vector<double> partial(std::size_t(blocks), 0.);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static)
-#endif
-  for(Eigen::Index b = 0; b < blocks; ++b)
-    partial[std::size_t(b)] = f(b * vector_block, (std::min)(vector_block, n - b * vector_block));
-  double sum = 0;
-  for(double p : partial) sum += p;
-  return sum;
+  std::vector<double> sum;
+  parallel_block_sums(n, 1, [&](Eigen::Index begin, Eigen::Index size, double* out) { *out = f(begin, size); }, sum);
+  return sum[0];
 }
 
 } // namespace internal
