@@ -322,7 +322,7 @@ TEST(FrameFieldSolvers, MultigridIsSymmetricPositiveDefiniteAndConverges)
   s.mu = 1e-6;
   const HR::internal::Multigrid_fine_system reference = s;
   s.apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) { y = apply_reference(reference, x); };
-  const HR::internal::Aggregation_multigrid M(s);
+  const HR::internal::Aggregation_multigrid M(s, HR::internal::Multigrid_cycle::V);
   EXPECT_GE(M.number_of_levels(), 2u);
   const Eigen::Index n = Eigen::Index(s.offset.back());
   for(int k = 0; k < 5; ++k) {
@@ -334,16 +334,16 @@ TEST(FrameFieldSolvers, MultigridIsSymmetricPositiveDefiniteAndConverges)
     EXPECT_GT(u.dot(Mu), 0.);
   }
 #ifdef _OPENMP
-  {
+  for(const HR::internal::Multigrid_cycle cycle : {HR::internal::Multigrid_cycle::V, HR::internal::Multigrid_cycle::K}) {
     // parallel loops gather per row: the preconditioner is bitwise the same whatever the thread count
     const Eigen::VectorXd u = Eigen::VectorXd::Random(n);
     const int saved = omp_get_max_threads();
     Eigen::VectorXd one, two;
     omp_set_num_threads(1);
-    const HR::internal::Aggregation_multigrid M1(s);
+    const HR::internal::Aggregation_multigrid M1(s, cycle);
     M1(u, one);
     omp_set_num_threads(2);
-    const HR::internal::Aggregation_multigrid M2(s);
+    const HR::internal::Aggregation_multigrid M2(s, cycle);
     M2(u, two);
     omp_set_num_threads(saved);
     EXPECT_TRUE(one == two);
@@ -382,6 +382,30 @@ TEST(FrameFieldSolvers, MultigridIterationsHardlyGrowWithTheMesh)
   EXPECT_GT(jacobi[1], 3 * jacobi[0] / 2);
   EXPECT_LT(multigrid[1], 3 * jacobi[1] / 10);
   EXPECT_LE(multigrid[1], multigrid[0] + multigrid[0] / 3 + 2);
+}
+
+// The relaxation's default K-cycle (with flexible conjugate gradients around it: it is not a fixed
+// linear map) solves the same system as the V-cycle in fewer iterations once the multigrid has two
+// coarse levels (on a single one both are the same).
+TEST(FrameFieldSolvers, KCycleNeedsFewerIterationsThanTheVCycle)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.0005);
+  const auto p = HR::internal::make_frame_field_problem(m, HR::boundary_triangle_unit_normals(m), HR::internal::Face_weighting::AREA_OVER_DISTANCE);
+  const HR::internal::Frame_field_relaxation relaxation(p);
+  int it_v = 0, it_k = 0;
+  double res_v = 1, res_k = 1;
+  const auto q_v = relaxation.solve(1e-10, 20000, it_v, res_v, HR::internal::Frame_field_preconditioner::MULTIGRID,
+                                    HR::internal::Multigrid_cycle::V);
+  const auto q_k = relaxation.solve(1e-10, 20000, it_k, res_k, HR::internal::Frame_field_preconditioner::MULTIGRID,
+                                    HR::internal::Multigrid_cycle::K);
+  ASSERT_LT(res_v, 1e-10);
+  ASSERT_LT(res_k, 1e-10);
+  double diff = 0, norm = 0;
+  for(std::size_t t = 0; t < q_v.size(); ++t) { diff = (std::max)(diff, (q_k[t] - q_v[t]).norm()); norm = (std::max)(norm, q_v[t].norm()); }
+  EXPECT_LT(diff, 1e-6 * norm);
+  // measured: 44 -> 35 here (about 27k tets); the gain grows with the number of levels (B0, 91k
+  // tets: 32 -> 18; a 502k-tet cylinder: 41 -> 20, at the pipeline's tolerance)
+  EXPECT_LT(it_k, 9 * it_v / 10) << "V-cycle " << it_v << ", K-cycle " << it_k << " iterations";
 }
 
 namespace {

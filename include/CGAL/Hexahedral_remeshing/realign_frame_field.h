@@ -258,8 +258,8 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     }
     b -= AX0;
   }
-  // Conjugate gradients preconditioned by Jacobi on small meshes, else by an aggregation multigrid on
-  // the dual graph whose coarse unknowns follow the matchings (aggregation_multigrid.h), built at
+  // Conjugate gradients preconditioned by Jacobi on small meshes, else (flexible) by an aggregation
+  // multigrid's K-cycle on the dual graph whose coarse unknowns follow the matchings (aggregation_multigrid.h), built at
   // the first iteration only (a field that needs no realignment needs no multigrid either).
   std::vector<Eigen::Matrix3d> E;
   std::vector<Eigen::Matrix3d> Ev; // reused: a fresh one per product costs its page faults every time
@@ -291,7 +291,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     }
     fine.mu = mu;
     fine.apply = apply_reduced;
-    multigrid.reset(new internal::Aggregation_multigrid(std::move(fine)));
+    multigrid.reset(new internal::Aggregation_multigrid(std::move(fine), internal::Multigrid_cycle::K));
   };
   Eigen::VectorXd inv_diag;
   const bool use_multigrid = internal::use_multigrid(internal::Frame_field_preconditioner::AUTOMATIC, nt);
@@ -307,7 +307,7 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
       if(!multigrid) build_multigrid();
       (*multigrid)(r, z);
     },
-    std::move(b), x, tolerance, 20000, result.solver_iterations, result.solver_residual);
+    std::move(b), x, tolerance, 20000, result.solver_iterations, result.solver_residual, use_multigrid);
   expand(x, E, true);
 
   // Projection to rotations (t: the solver's tet, frame: the mesh's), independent per tet; the

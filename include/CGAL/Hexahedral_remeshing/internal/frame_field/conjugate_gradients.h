@@ -16,11 +16,6 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// Preconditioned conjugate gradients on A x = b from the given x, matrix-free: apply(v, Av) and
-// precondition(r, z) (z = M^-1 r, M symmetric positive definite). Stops at |b - A x| < tolerance |b|
-// or after max_iterations. The vector operations are those of parallel_vector_operations.h, so the
-// iterates do not depend on the number of threads. b is taken by value and becomes the residual (one vector
-// of the size of the system less at the peak: move it in).
 // Preconditioner of the frame-field solves. AUTOMATIC: Jacobi below multigrid_minimum_tets
 // tetrahedra, where the multigrid's setup and its three operator products per iteration cost more
 // than the iterations it saves (measured with 2 threads: 6.8k tets, relaxation 50 -> 65 ms;
@@ -34,10 +29,18 @@ inline bool use_multigrid(Frame_field_preconditioner p, std::size_t tets)
          (p == Frame_field_preconditioner::AUTOMATIC && tets >= multigrid_minimum_tets);
 }
 
+// Preconditioned conjugate gradients on A x = b from the given x, matrix-free: apply(v, Av) and
+// precondition(r, z) (z = M^-1 r, M symmetric positive definite). Stops at |b - A x| < tolerance |b|
+// or after max_iterations. The vector operations are those of parallel_vector_operations.h, so the
+// iterates do not depend on the number of threads. b is taken by value and becomes the residual (one vector
+// of the size of the system less at the peak: move it in). flexible: the preconditioner may vary
+// from one call to the next (a K-cycle, Multigrid_cycle): Polak-Ribiere's beta (Notay's flexible
+// CG, one more dot product fused in the same pass) keeps it converging where Fletcher-Reeves'
+// would not.
 template <class Apply, class Precondition>
 void preconditioned_conjugate_gradients(const Apply& apply, const Precondition& precondition, Eigen::VectorXd b,
                                         Eigen::VectorXd& x, double tolerance, int max_iterations, int& iterations,
-                                        double& relative_residual)
+                                        double& relative_residual, bool flexible = false)
 {
   Eigen::VectorXd Ax;
   apply(x, Ax);
@@ -51,6 +54,7 @@ void preconditioned_conjugate_gradients(const Apply& apply, const Precondition& 
   Eigen::VectorXd d = z;
   double rz = r.dot(z);
   const Eigen::Index n = r.size();
+  std::vector<double> dots;
   while(iterations < max_iterations) {
     apply(d, Ax);
     const double alpha = rz / parallel_dot(d, Ax);
@@ -63,8 +67,16 @@ void preconditioned_conjugate_gradients(const Apply& apply, const Precondition& 
     relative_residual = std::sqrt(rr) / b_norm;
     if(relative_residual < tolerance) break;
     precondition(r, z);
-    const double rz_new = parallel_dot(r, z);
-    const double beta = rz_new / rz;
+    double rz_new, beta;
+    if(flexible) {
+      // Polak-Ribiere: z_new . (r_new - r_old) = -alpha z_new . A d
+      parallel_dots(z, {&r, &Ax}, dots);
+      rz_new = dots[0];
+      beta = -alpha * dots[1] / rz;
+    } else {
+      rz_new = parallel_dot(r, z);
+      beta = rz_new / rz;
+    }
     for_each_segment(n, [&](Eigen::Index begin, Eigen::Index size) {
       d.segment(begin, size) = z.segment(begin, size) + beta * d.segment(begin, size);
     });

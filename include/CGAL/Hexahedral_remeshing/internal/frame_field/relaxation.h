@@ -96,10 +96,11 @@ public:
   }
 
   // Solves the relaxation; returns the relaxed q of every tet. Reports CG iterations and residual.
-  // The conjugate gradients are preconditioned by Jacobi or by an aggregation multigrid (iterations
+  // The conjugate gradients are preconditioned by Jacobi or (flexible) by an aggregation multigrid's K-cycle (iterations
   // nearly independent of the mesh size), see Frame_field_preconditioner.
   std::vector<Vector9> solve(double tolerance, int max_iterations, int& iterations, double& relative_residual,
-                             Frame_field_preconditioner preconditioner = Frame_field_preconditioner::AUTOMATIC) const
+                             Frame_field_preconditioner preconditioner = Frame_field_preconditioner::AUTOMATIC,
+                             Multigrid_cycle cycle = Multigrid_cycle::K) const
   {
     const Eigen::Index n = Eigen::Index(number_of_unknowns());
     std::vector<Vector9> q;
@@ -127,9 +128,9 @@ public:
         fine.embeddings.insert(fine.embeddings.end(), m_family[t].basis.data(), m_family[t].basis.data() + 18);
       }
       fine.apply = apply;
-      const Aggregation_multigrid multigrid(std::move(fine));
+      const Aggregation_multigrid multigrid(std::move(fine), cycle);
       preconditioned_conjugate_gradients(apply, multigrid, std::move(b), x, tolerance, max_iterations, iterations,
-                                         relative_residual);
+                                         relative_residual, cycle == Multigrid_cycle::K);
     } else {
       Eigen::VectorXd inv_diag(n);
       for(std::size_t t = 0; t < m_p.number_of_tets; ++t) {

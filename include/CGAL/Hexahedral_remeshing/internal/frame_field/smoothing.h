@@ -48,7 +48,8 @@ inline double frame_field_energy(const Frame_field_problem& p, const std::vector
 // exactly throughout.
 // Plain L-BFGS needs more iterations the longer the mesh is (the energy is Dirichlet-like); on
 // meshes where the frame-field solves use the multigrid (see Frame_field_preconditioner), its
-// initial inverse Hessian is that multigrid on the rotation Laplacian instead (preconditioned_lbfgs()):
+// initial inverse Hessian is that multigrid's V-cycle (linear and symmetric, as L-BFGS needs) on the
+// rotation Laplacian instead (preconditioned_lbfgs()):
 // between two equal frames, small rotations omega_s, omega_t give the face the energy
 // (20/3) w_f |omega_s - omega_t|^2, the same about every axis by the cube's symmetry, so near a
 // smooth field the Hessian in these angles is about (40/3) times that Laplacian; the scale is left
@@ -94,7 +95,7 @@ public:
     }
     fine.mu = 1e-8;
     fine.apply = [this](const Eigen::VectorXd& x, Eigen::VectorXd& y) { apply_rotation_laplacian(x, y); };
-    return Aggregation_multigrid(std::move(fine));
+    return Aggregation_multigrid(std::move(fine), Multigrid_cycle::V);
   }
 
   // y = L x for the rotation Laplacian sum_f w_f |omega_s - omega_t|^2 + mu sum_t |omega_t|^2 (mu =
