@@ -1,5 +1,6 @@
 // Benchmark of the frame-field pipeline, stage by stage (medians of several runs) and peak memory.
-//   bench_frame_field [--runs N] [--threads T] FILE...   (default: B0 and i01c_m1 of ../shared/data)
+//   bench_frame_field [--runs N] [--threads T] [--max-volume V] FILE...   (default: B0 and i01c_m1 of
+//                     ../shared/data; V: TetGen's volume bound for surfaces, see boundary_surface.py)
 //   bench_frame_field --series [--runs N] [--threads T] N1 N2 ...   (TetGen cylinders of about N tets)
 // Meshes are built with split_boundary_chords(true), as hexmesh does. Columns: seconds per stage, peak
 // memory, CG iterations of the relaxation, L-BFGS iterations, CG iterations of the realignment, and the
@@ -98,6 +99,7 @@ int main(int argc, char** argv)
 {
   int runs = 3;
   bool series = false;
+  double max_volume = 0;
   std::vector<std::string> args;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -106,6 +108,7 @@ int main(int argc, char** argv)
     else if(a == "--threads" && i + 1 < argc) omp_set_num_threads(std::max(1, std::atoi(argv[++i])));
 #endif
     else if(a == "--series") series = true;
+    else if(a == "--max-volume" && i + 1 < argc) max_volume = std::atof(argv[++i]);
     else args.push_back(a);
   }
   const std::string shared = HEXREM_SHARED_DATA_DIR;
@@ -132,7 +135,8 @@ int main(int argc, char** argv)
                                       HR::parameters::split_boundary_chords(true, HR::parameters::maximum_tetrahedron_volume(6.24 / (target / 1.2))));
         rows.push_back(run("cylinder~" + a, mesh, runs));
       } else {
-        HR::IO::read_tetrahedral_mesh(a, mesh, HR::parameters::split_boundary_chords(true));
+        HR::IO::read_tetrahedral_mesh(a, mesh, HR::parameters::split_boundary_chords(true,
+                                                HR::parameters::maximum_tetrahedron_volume(max_volume)));
         rows.push_back(run(a.substr(a.find_last_of('/') + 1), mesh, runs));
       }
     }

@@ -584,8 +584,8 @@ private:
   }
 
   // x = approximately A_j^-1 b on coarse level j: one cycle there, or with the K-cycle two
-  // flexible conjugate-gradient iterations preconditioned by it (Notay 2010, Algorithm 3.2; the
-  // second one only if the first left more than a quarter of the residual).
+  // flexible conjugate-gradient iterations preconditioned by it (Notay and Vassilevski 2008; the
+  // second one only if the first left more than a quarter of the residual, as in AGMG).
   void coarse_correction(std::size_t j) const
   {
     if(m_cycle == Multigrid_cycle::V || j + 1 == m_levels.size()) { cycle(j); return; }
