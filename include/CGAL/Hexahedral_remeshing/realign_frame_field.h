@@ -259,8 +259,9 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     b -= AX0;
   }
   // Conjugate gradients preconditioned by Jacobi on small meshes, else (flexible) by an aggregation
-  // multigrid's K-cycle on the dual graph whose coarse unknowns follow the matchings (aggregation_multigrid.h), built at
-  // the first iteration only (a field that needs no realignment needs no multigrid either).
+  // multigrid's K-cycle on the dual graph whose coarse unknowns follow the matchings
+  // (aggregation_multigrid.h), built at the first iteration only (a field that needs no realignment
+  // needs no multigrid either).
   std::vector<Eigen::Matrix3d> E;
   std::vector<Eigen::Matrix3d> Ev; // reused: a fresh one per product costs its page faults every time
   auto apply_reduced = [&](const Eigen::VectorXd& v, Eigen::VectorXd& Av) {

@@ -96,8 +96,8 @@ public:
   }
 
   // Solves the relaxation; returns the relaxed q of every tet. Reports CG iterations and residual.
-  // The conjugate gradients are preconditioned by Jacobi or (flexible) by an aggregation multigrid's K-cycle (iterations
-  // nearly independent of the mesh size), see Frame_field_preconditioner.
+  // The conjugate gradients are preconditioned by Jacobi or (flexible) by an aggregation multigrid's
+  // K-cycle (iterations nearly independent of the mesh size), see Frame_field_preconditioner.
   std::vector<Vector9> solve(double tolerance, int max_iterations, int& iterations, double& relative_residual,
                              Frame_field_preconditioner preconditioner = Frame_field_preconditioner::AUTOMATIC,
                              Multigrid_cycle cycle = Multigrid_cycle::K) const
