@@ -183,6 +183,11 @@ TEST(Surfaces, OffQuadsColoursAndBadIndices)
   std::ofstream(negative) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 -1 3\n3 0 2 3\n3 1 2 3\n";
   const std::string what = error_of(negative);
   EXPECT_TRUE(contains(what, "negative.off:8: face 1: vertex index -1 out of range")) << what;
+  // a non-planar pentagon whose projection overlaps itself (from the fuzzer: it broke the CDT of
+  // the triangulation of polygons): triangulated in 3D, then refused as an open surface
+  const std::string pentagon = temp_dir() + "pentagon.off";
+  std::ofstream(pentagon) << "OFF\n5 1 0\n0 0 0\n0 1 0\n1 1 0\n0 0 1\n0 1 1\n5 0 1 2 3 4\n";
+  EXPECT_TRUE(contains(error_of(pentagon), "the surface is not closed")) << error_of(pentagon);
   const std::string huge = temp_dir() + "huge.off";
   std::ofstream(huge) << "OFF\n4000000000 4 0\n0 0 0\n";
   EXPECT_TRUE(contains(error_of(huge), "more vertices than the file can hold")) << error_of(huge);

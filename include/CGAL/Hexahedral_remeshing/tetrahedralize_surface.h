@@ -85,7 +85,18 @@ inline void surface_from_polygon_soup(std::vector<Surface_kernel::Point_3>& poin
                       "(e.g. two bodies sharing an edge, a face or a corner); separate the bodies or fuse them "
                       "into one solid, and retry");
   PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
-  if(!CGAL::is_triangle_mesh(sm) && !PMP::triangulate_faces(sm))
+  // Polygons are triangulated in 3D (hole filling), not by a constrained Delaunay triangulation of
+  // their projection, which fails on a non-planar polygon whose projection overlaps itself (found
+  // by the fuzzer: a precondition of CGAL's CDT, unchecked with NDEBUG). What still fails is an error.
+  bool triangulated = CGAL::is_triangle_mesh(sm);
+  if(!triangulated) {
+    try {
+      triangulated = PMP::triangulate_faces(sm, CGAL::parameters::use_delaunay_triangulation(false));
+    } catch(const CGAL::Failure_exception&) {
+      triangulated = false;
+    }
+  }
+  if(!triangulated)
     throw Input_error(source, 0, "a polygonal face cannot be triangulated (degenerate face); triangulate the "
                       "surface and retry");
 }
