@@ -276,7 +276,7 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
   Tetrahedral_soup_3<Point> result;
   internal::deserialize_soup(bytes, result);
   if(result.tetrahedra.empty()) throw Input_error(source, 0, "TetGen produced no tetrahedra");
-  if(long(result.points.size() - surface_vertices) >= steiner_limit)
+  if(result.points.size() >= surface_vertices + std::size_t(steiner_limit))
     throw Input_error(source, 0, "TetGen's quality refinement does not terminate on this surface: it stopped at " +
                       std::to_string(steiner_limit) + " added points (" +
                       std::to_string(long(internal::steiner_points_per_surface_vertex)) + " per surface vertex" +
