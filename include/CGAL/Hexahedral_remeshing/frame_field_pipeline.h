@@ -10,7 +10,9 @@
 #include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
 #include <CGAL/Hexahedral_remeshing/frame_field.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/local_meshability.h>
 #include <CGAL/Hexahedral_remeshing/realign_frame_field.h>
+#include <CGAL/Hexahedral_remeshing/repair_singularity_graph.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/acute_edge_frames.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 
@@ -49,7 +51,8 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(acute_edge_band_radius)
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of the pipeline: the hooks of `Frame_field_visitor`, called for every stage of
 /// the pipeline (`"valences"`, `"constraints"`, `"setup"`, `"initialization"`, `"smoothing"`,
-/// `"matchings"`, `"realignment"`), in this order (`"smoothing"` and `"realignment"` only when they run).
+/// `"matchings"`, `"repair"`, `"realignment"`), in this order (`"smoothing"`, `"repair"` and
+/// `"realignment"` only when they run).
 struct Frame_field_pipeline_visitor : Frame_field_visitor
 {
 };
@@ -80,10 +83,20 @@ struct Frame_field_pipeline_result
   std::size_t redirected_directions = 0;
   /// Report of the frame-field solver.
   Frame_field_result frame_field;
-  /// Matchings of the field of step 2 (kept by the realignment).
+  /// Matchings of the field of step 2, repaired (kept by the realignment).
   Matchings matchings;
-  /// Singularity graph of the field.
+  /// Singularity graph of the field of step 2 with the repaired matchings.
   Singularity_graph singularities;
+  /// Local meshability check of the field of step 2 with its closest matchings, before the repair
+  /// (prescribed valences and the directions `v` for the feature sectors).
+  Local_meshability_report meshability_before;
+  /// Report of the repair of the singularity graph (named parameter `singularity_repair`).
+  Singularity_repair_result repair;
+  /// True if the repair ran.
+  bool repaired = false;
+  /// Local meshability check of the returned frames with the kept matchings (the normals for the
+  /// feature sectors once realigned).
+  Local_meshability_report meshability;
   /// Valences of the boundary edges produced by the field, compared with `valences`.
   Boundary_valences boundary_valences;
   /// Report of the realignment (if any).
@@ -122,6 +135,12 @@ struct Frame_field_pipeline_result
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{realignment}
 ///     \cgalParamDescription{realign the field with the normals (paper Sec. 3.3)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{singularity_repair}
+///     \cgalParamDescription{repair the singularity graph by matching surgery before the realignment
+///       (`repair_singularity_graph()`, with `maximum_repair_steps` if given)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
@@ -210,8 +229,18 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   r.matchings = compute_matchings(mesh, r.frames);
   r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
   r.boundary_valences = compute_achieved_boundary_valences(mesh, r.frames, r.matchings, r.directions, r.valences);
+  r.meshability_before = check_local_meshability(mesh, r.frames, r.matchings, r.valences, r.directions);
   r.matchings_seconds = seconds_since(t);
   visitor.end_stage("matchings", r.matchings_seconds);
+
+  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), true)) {
+    visitor.start_stage("repair");
+    r.repair = repair_singularity_graph(mesh, r.frames, r.matchings, np);
+    r.repaired = true;
+    // an unchanged field keeps its graph bitwise
+    if(r.repair.changed_faces > 0) r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
+    visitor.end_stage("repair", r.repair.seconds);
+  }
 
   if(realign) {
     visitor.start_stage("realignment");
@@ -222,6 +251,8 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
     r.realigned = true;
     visitor.end_stage("realignment", r.realignment.seconds);
   }
+  r.meshability = check_local_meshability(mesh, r.frames, r.matchings, r.valences,
+                                          r.realigned ? boundary_triangle_unit_normals(mesh) : r.directions);
   r.seconds = seconds_since(start);
   return r;
 }

@@ -1,0 +1,172 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+//
+// The state of the singularity-graph repair: the kept matchings being edited, the holonomy and class
+// of every interior edge, and the local cost that every operation must lower. A change of the
+// matching of one face changes the holonomy of its three edges only (Li et al. 2012: moving a
+// singular edge across a triangle), so a change is evaluated on those edges and their vertices.
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_STATE_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_STATE_H
+
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/edge_holonomy.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cstdint>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// A proposed change: face `face` gets matching `matching`, then (if `second_face` is not -1)
+// `second_face` gets `second_matching`; `delta` the change of the cost.
+struct Face_change
+{
+  std::uint32_t face = 0;
+  int matching = -1;
+  double delta = 0;
+  std::int64_t second_face = -1;
+  int second_matching = -1;
+};
+
+template <class Mesh>
+class Singularity_repair_state
+{
+public:
+  typedef typename Mesh::Index Index;
+
+  Singularity_repair_state(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, std::vector<int>& face_matching)
+    : m_mesh(mesh), m_frames(frames), m_matching(face_matching)
+  {
+    const std::size_t ne = mesh.number_of_edges();
+    m_holonomy.assign(ne, -1);
+    m_class.assign(ne, -1);
+    double total = 0;
+    for(Index e = 0; e < ne; ++e) {
+      const auto& ev = mesh.edge_vertices(e);
+      total += (to_eigen_point(mesh.point(ev[1])) - to_eigen_point(mesh.point(ev[0]))).norm();
+      if(mesh.is_boundary_edge(e)) continue;
+      m_holonomy[e] = edge_holonomy(mesh, m_matching, e);
+      m_class[e] = classify(e, m_holonomy[e]);
+    }
+    m_mean_length = ne > 0 ? total / double(ne) : 1.0;
+  }
+
+  const Mesh& mesh() const { return m_mesh; }
+  const std::vector<signed char>& edge_classes() const { return m_class; }
+  signed char edge_class(Index e) const { return m_class[e]; }
+  int matching(Index f) const { return m_matching[f]; }
+
+  // The edges of face f (found once per face asked).
+  std::array<Index, 3> face_edges(Index f) const
+  {
+    const auto& fv = m_mesh.face_vertices(f);
+    return {{m_mesh.find_edge(fv[0], fv[1]), m_mesh.find_edge(fv[1], fv[2]), m_mesh.find_edge(fv[2], fv[0])}};
+  }
+
+  // Only interior faces none of whose edges is on the boundary: the transports around boundary edges,
+  // hence the boundary valences the paper guarantees, stay as they are.
+  bool is_editable(Index f) const
+  {
+    if(m_mesh.is_boundary_face(f)) return false;
+    for(Index e : face_edges(f)) if(m_mesh.is_boundary_edge(e)) return false;
+    return true;
+  }
+
+  double edge_cost(Index e, signed char c, int G) const
+  {
+    if(c == 4 || c < 0) return 0;
+    if(c == IMPROPER_CLASS) return 20;
+    const auto& ev = m_mesh.edge_vertices(e);
+    const double length = (to_eigen_point(m_mesh.point(ev[1])) - to_eigen_point(m_mesh.point(ev[0]))).norm() / m_mean_length;
+    const double a = std::abs(holonomy_axis_cosine(m_mesh, m_frames, e, G));
+    // a jog costs more the further it is off its axis, so that a jog can be walked off in steps
+    if(c == JOG_CLASS) return 4 + 4 * (std::sqrt(0.5) - a) / std::sqrt(0.5) + 0.05 * length;
+    return 0.05 * length * (2 - a);
+  }
+
+  static double vertex_cost(const Vertex_singularity& s)
+  {
+    switch(s.kind) {
+      case Vertex_singularity::NONE: return 0;
+      case Vertex_singularity::BOUNDARY_CONTACT: return 5;
+      default: return 10;
+    }
+  }
+
+  double vertex_cost(Index v) const { return vertex_cost(vertex_singularity(m_mesh, m_class, v)); }
+
+  // The change of the cost if face f had matching g.
+  double evaluate(Index f, int g)
+  {
+    const std::array<Index, 3> edges = face_edges(f);
+    const auto& fv = m_mesh.face_vertices(f);
+    double before = 0, after = 0;
+    for(Index v : fv) before += vertex_cost(v);
+    std::array<int, 3> G;
+    std::array<signed char, 3> c;
+    for(int i = 0; i < 3; ++i) before += edge_cost(edges[i], m_class[edges[i]], m_holonomy[edges[i]]);
+    const int old = m_matching[f];
+    m_matching[f] = g;
+    for(int i = 0; i < 3; ++i) {
+      G[i] = edge_holonomy(m_mesh, m_matching, edges[i]);
+      c[i] = classify(edges[i], G[i]);
+      after += edge_cost(edges[i], c[i], G[i]);
+    }
+    std::array<signed char, 3> saved;
+    for(int i = 0; i < 3; ++i) { saved[i] = m_class[edges[i]]; m_class[edges[i]] = c[i]; }
+    for(Index v : fv) after += vertex_cost(v);
+    for(int i = 0; i < 3; ++i) m_class[edges[i]] = saved[i];
+    m_matching[f] = old;
+    return after - before;
+  }
+
+  // The change of the cost of a change of one or two faces.
+  double evaluate(const Face_change& c)
+  {
+    if(c.second_face < 0) return evaluate(c.face, c.matching);
+    const int old = m_matching[c.face];
+    const double first = evaluate(c.face, c.matching);
+    apply(c.face, c.matching);
+    const double second = evaluate(Index(c.second_face), c.second_matching);
+    apply(c.face, old);
+    return first + second;
+  }
+
+  void apply(const Face_change& c)
+  {
+    apply(c.face, c.matching);
+    if(c.second_face >= 0) apply(Index(c.second_face), c.second_matching);
+  }
+
+  void apply(Index f, int g)
+  {
+    m_matching[f] = g;
+    for(Index e : face_edges(f)) {
+      m_holonomy[e] = edge_holonomy(m_mesh, m_matching, e);
+      m_class[e] = classify(e, m_holonomy[e]);
+    }
+  }
+
+  int holonomy(Index e) const { return m_holonomy[e]; }
+
+private:
+  signed char classify(Index e, int G) const { return classify_edge(m_mesh, m_frames, e, G); }
+
+  const Mesh& m_mesh;
+  const std::vector<Eigen::Matrix3d>& m_frames;
+  std::vector<int>& m_matching;
+  std::vector<int> m_holonomy;
+  std::vector<signed char> m_class;
+  double m_mean_length = 1;
+};
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_STATE_H

@@ -1,0 +1,176 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_LOCAL_MESHABILITY_H
+#define CGAL_HEXAHEDRAL_REMESHING_LOCAL_MESHABILITY_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/edge_holonomy.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Why a location of a frame field is not locally hex-meshable (design notes `robust_pipeline.md` §1;
+/// Liu, Bommes et al., "Locally Meshable Frame Fields", 2023).
+enum class Meshability_reason {
+  /// An interior edge whose holonomy is neither the identity nor a quarter turn (a compound edge).
+  IMPROPER_EDGE,
+  /// A singular edge (quarter-turn holonomy) more than 45 degrees off its holonomy axis.
+  JOG,
+  /// An interior vertex where exactly one singular edge ends.
+  DANGLING_END,
+  /// An interior vertex where a valence-3 curve turns into a valence-5 one.
+  ZIPPER,
+  /// An interior vertex where three or more singular edges meet in a configuration that no hex-mesh
+  /// vertex has: the link of a hex-mesh vertex is a triangulated sphere, so the valences `k` of the
+  /// hex edges at the vertex satisfy `sum (6 - k) = 12` (with `k >= 3`); with `n3` valence-3 and
+  /// `n5` valence-5 edges, `12 - 3 n3 - n5` must be even and non-negative (the regular edges make up
+  /// the rest, 2 each). A necessary condition, not the full local parametrization test.
+  INVALID_NODE,
+  /// A boundary vertex where a singular curve touches the boundary and goes on (two singular edges of
+  /// the same valence, nothing ends there).
+  BOUNDARY_CONTACT,
+  /// A boundary edge whose valence, as the frames make it, differs from the prescribed one (the sectors
+  /// of the feature do not fit its valence).
+  FEATURE_SECTOR,
+  /// An interior face where the closest matching of the frames differs from the kept matching.
+  DISAGREEING_FACE
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Number of values of `Meshability_reason`.
+constexpr std::size_t number_of_meshability_reasons = 8;
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// The name of a reason in reports (`"improper_edge"`, `"jog"`, `"dangling_end"`, `"zipper"`,
+/// `"invalid_node"`, `"boundary_contact"`, `"feature_sector"`, `"disagreeing_face"`).
+inline const char* meshability_reason_name(Meshability_reason reason)
+{
+  static const char* names[number_of_meshability_reasons] = {"improper_edge", "jog", "dangling_end", "zipper",
+                                                              "invalid_node", "boundary_contact", "feature_sector",
+                                                              "disagreeing_face"};
+  return names[std::size_t(reason)];
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// One location that fails the local meshability check.
+struct Meshability_violation
+{
+  /// Why.
+  Meshability_reason reason = Meshability_reason::IMPROPER_EDGE;
+  /// Index of the edge (improper edge, jog, feature sector), vertex (dangling end, zipper, node,
+  /// boundary contact) or face (disagreeing face) in the tetrahedral mesh.
+  std::uint32_t index = 0;
+  /// Position in model units: the vertex, or the midpoint of the edge, or the centroid of the face.
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Result of `check_local_meshability()`.
+struct Local_meshability_report
+{
+  /// Every violation, edges first (by index), then vertices, then faces.
+  std::vector<Meshability_violation> violations;
+  /// Number of violations per reason (indexed by `Meshability_reason`).
+  std::array<std::size_t, number_of_meshability_reasons> counts{};
+  /// Per interior edge, its class in the check (`-1` boundary, 4 regular, 3 or 5 singular along its
+  /// axis, 0 improper, `1` a jog).
+  std::vector<signed char> edge_class;
+
+  /// Number of violations of one reason.
+  std::size_t count(Meshability_reason reason) const { return counts[std::size_t(reason)]; }
+  /// Number of violations of every reason.
+  std::size_t total() const
+  {
+    std::size_t n = 0;
+    for(std::size_t c : counts) n += c;
+    return n;
+  }
+  /// Number of violations of the singularity graph itself (every reason but the disagreeing faces and
+  /// the feature sectors, which the frames and the constraints decide).
+  std::size_t graph_defects() const
+  {
+    return total() - count(Meshability_reason::DISAGREEING_FACE) - count(Meshability_reason::FEATURE_SECTOR);
+  }
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Checks that a frame field with its kept matchings is locally hex-meshable: every interior edge's
+/// holonomy (the product of the kept matchings around it) is the identity or a quarter turn about an
+/// axis within 45 degrees of the edge; no singular curve ends inside the volume, turns from valence 3
+/// into valence 5, or touches the boundary without ending there; nodes pass the link condition of
+/// `Meshability_reason::INVALID_NODE`; boundary edges get their prescribed valence; frames agree
+/// with the kept matchings. The check reads the matchings, not `compute_singularity_graph()`'s
+/// flags (which tolerate edges up to 75.5 degrees off their axis).
+///
+/// \param mesh the tetrahedral mesh
+/// \param frames one frame (columns = axes) per tetrahedron
+/// \param matchings the kept matchings
+/// \param prescribed per edge, the prescribed valence of boundary edges (empty: no feature check)
+/// \param directions per boundary triangle, the directions the frames are aligned with (the normals
+///        after the realignment; empty: no feature check)
+/// \returns every violation with its reason and position, and the counts by reason
+/// \throws Error if `frames` or `matchings` are not sized for `mesh`.
+template <class Traits>
+Local_meshability_report check_local_meshability(const Tetrahedral_mesh_3<Traits>& mesh,
+                                                 const std::vector<Eigen::Matrix3d>& frames,
+                                                 const Matchings& matchings,
+                                                 const std::vector<int>& prescribed = std::vector<int>(),
+                                                 const std::vector<Eigen::Vector3d>& directions = std::vector<Eigen::Vector3d>())
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  if(frames.size() != mesh.number_of_tetrahedra() || matchings.face_matching.size() != mesh.number_of_faces())
+    throw Error("check_local_meshability: frames or matchings of another mesh");
+  Local_meshability_report r;
+  auto point = [&](Index v) { return internal::to_eigen_point(mesh.point(v)); };
+  auto add = [&](Meshability_reason reason, Index index, const Eigen::Vector3d& p) {
+    r.violations.push_back({reason, std::uint32_t(index), p});
+    ++r.counts[std::size_t(reason)];
+  };
+  const std::size_t ne = mesh.number_of_edges();
+  r.edge_class.assign(ne, -1);
+  for(Index e = 0; e < ne; ++e) {
+    if(mesh.is_boundary_edge(e)) continue;
+    r.edge_class[e] = internal::classify_edge(mesh, frames, e, internal::edge_holonomy(mesh, matchings.face_matching, e));
+    const auto& ev = mesh.edge_vertices(e);
+    if(r.edge_class[e] == internal::IMPROPER_CLASS) add(Meshability_reason::IMPROPER_EDGE, e, 0.5 * (point(ev[0]) + point(ev[1])));
+    else if(r.edge_class[e] == internal::JOG_CLASS) add(Meshability_reason::JOG, e, 0.5 * (point(ev[0]) + point(ev[1])));
+  }
+  if(!prescribed.empty() && !directions.empty()) {
+    const Boundary_valences b = compute_achieved_boundary_valences(mesh, frames, matchings, directions, prescribed);
+    for(Index e : mesh.boundary_edges()) {
+      const int p = prescribed[e], k = b.achieved[e];
+      if(p >= 5 ? ((k - p) % 4 + 4) % 4 != 0 : k != p) {
+        const auto& ev = mesh.edge_vertices(e);
+        add(Meshability_reason::FEATURE_SECTOR, e, 0.5 * (point(ev[0]) + point(ev[1])));
+      }
+    }
+  }
+  for(Index v = 0; v < mesh.number_of_vertices(); ++v) {
+    const internal::Vertex_singularity s = internal::vertex_singularity(mesh, r.edge_class, v);
+    if(s.kind != internal::Vertex_singularity::NONE) add(Meshability_reason(int(s.kind)), v, point(v));
+  }
+  for(Index f = 0; f < mesh.number_of_faces(); ++f) {
+    if(mesh.is_boundary_face(f)) continue;
+    const auto& ft = mesh.face_tetrahedra(f);
+    if(internal::closest_matching(frames[ft[0]], frames[ft[1]]).index == matchings.face_matching[f]) continue;
+    const auto& fv = mesh.face_vertices(f);
+    add(Meshability_reason::DISAGREEING_FACE, f, (point(fv[0]) + point(fv[1]) + point(fv[2])) / 3.0);
+  }
+  return r;
+}
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_LOCAL_MESHABILITY_H

@@ -1,0 +1,150 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_REPAIR_SINGULARITY_GRAPH_H
+#define CGAL_HEXAHEDRAL_REMESHING_REPAIR_SINGULARITY_GRAPH_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/local_meshability.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/greedy_surgery.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/local_matching_search.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/move_singular_edge.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_jog.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <chrono>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+
+namespace internal_np {
+enum singularity_repair_t { singularity_repair };
+enum maximum_repair_steps_t { maximum_repair_steps };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// Pipeline: repair the singularity graph of the field before the realignment (`bool`, default `true`).
+template <class T> unspecified_type singularity_repair(const T& value);
+/// Repair: maximum number of defects visited by the matching surgery (`std::size_t`, default
+/// `20 * (defects + 100)`).
+template <class T> unspecified_type maximum_repair_steps(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(singularity_repair)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_repair_steps)
+#endif
+} // namespace parameters
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Report of `repair_singularity_graph()`.
+struct Singularity_repair_result
+{
+  /// Violations of the local check by reason (indexed by `Meshability_reason`) before the repair.
+  std::array<std::size_t, number_of_meshability_reasons> defects_before{};
+  /// Violations of the local check by reason after the repair (same frames, repaired matchings;
+  /// `DISAGREEING_FACE` counts the faces the surgery changed until the frames follow them).
+  std::array<std::size_t, number_of_meshability_reasons> defects_after{};
+  /// Changes applied by each operation: (name, count), in the order the operations are tried.
+  std::vector<std::pair<std::string, std::size_t> > operations;
+  /// Faces whose matching differs from the input matching at the end.
+  std::size_t changed_faces = 0;
+  /// Seconds.
+  double seconds = 0;
+
+  /// Number of changes of all operations.
+  std::size_t applied() const
+  {
+    std::size_t n = 0;
+    for(const auto& o : operations) n += o.second;
+    return n;
+  }
+};
+
+namespace internal {
+
+template <class Mesh>
+std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_repair_operations()
+{
+  std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > operations;
+  operations.emplace_back(new Move_singular_edge<Mesh>());
+  operations.emplace_back(new Remove_zigzag<Mesh>());
+  operations.emplace_back(new Local_matching_search<Mesh>());
+  operations.emplace_back(new Slide_jog<Mesh>());
+  return operations;
+}
+
+inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_meshability_reasons>& counts)
+{
+  return counts[std::size_t(Meshability_reason::IMPROPER_EDGE)] + counts[std::size_t(Meshability_reason::JOG)] +
+         counts[std::size_t(Meshability_reason::DANGLING_END)] + counts[std::size_t(Meshability_reason::ZIPPER)] +
+         counts[std::size_t(Meshability_reason::INVALID_NODE)] + counts[std::size_t(Meshability_reason::BOUNDARY_CONTACT)];
+}
+
+} // namespace internal
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Repairs the singularity graph of a frame field by matching surgery, so that it passes the local
+/// check of `check_local_meshability()` (design notes `robust_pipeline.md` §1; Li et al. 2012;
+/// Liu, Bommes et al. 2023): the matching of one face at a time is changed, which moves the
+/// holonomy between the three edges of the face. Operations, tried at every defect (jog, improper
+/// edge, zipper, invalid node, boundary contact): a defective edge moved across a triangle of its
+/// ring (`"move_singular_edge"`), two singular edges of one triangle replaced by the third or
+/// cancelled (`"remove_zigzag"`), any other matching of a face around the defect
+/// (`"matching_search"`), a jog slid one vertex along its curve by two changes evaluated together
+/// (`"slide_jog"`). A change is kept only if it lowers a cost in which defects dominate
+/// (improper edges, then jogs by their angle, then defective vertices) and the length of the
+/// singular curves breaks ties; so the repair never adds defects, and it stops at a local minimum.
+/// Faces with a boundary edge are never changed: the transport around every boundary edge, hence
+/// every achieved boundary valence (the paper's guarantee), stays as it was.
+///
+/// The frames are not changed: re-optimize them with the repaired matchings fixed
+/// (`realign_frame_field()`, which `compute_frame_field_pipeline()` runs after the repair).
+///
+/// \param mesh the tetrahedral mesh
+/// \param frames one frame per tetrahedron (they give the world axes of the holonomies)
+/// \param matchings the kept matchings, repaired in place
+/// \param np optional named parameters: `maximum_repair_steps`
+/// \returns the defects by reason before and after, the changes by operation, the seconds
+/// \throws Error if `frames` or `matchings` are not sized for `mesh`.
+template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Traits>& mesh,
+                                                   const std::vector<Eigen::Matrix3d>& frames,
+                                                   Matchings& matchings,
+                                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Tetrahedral_mesh_3<Traits> Mesh;
+  const auto start = std::chrono::steady_clock::now();
+  Singularity_repair_result r;
+  r.defects_before = check_local_meshability(mesh, frames, matchings).counts;
+  const std::size_t defects = internal::graph_defect_count(r.defects_before);
+  const std::size_t max_steps = choose_parameter(get_parameter(np, internal_np::maximum_repair_steps), 20 * (defects + 100));
+  const std::vector<int> input = matchings.face_matching;
+  if(defects > 0) {
+    const auto operations = internal::singularity_repair_operations<Mesh>();
+    internal::Singularity_repair_state<Mesh> state(mesh, frames, matchings.face_matching);
+    std::vector<std::size_t> applied;
+    internal::greedy_surgery(state, operations, max_steps, applied);
+    for(std::size_t k = 0; k < operations.size(); ++k) r.operations.emplace_back(operations[k]->name(), applied[k]);
+  }
+  for(std::size_t f = 0; f < input.size(); ++f) r.changed_faces += (input[f] != matchings.face_matching[f]);
+  r.defects_after = r.changed_faces > 0 ? check_local_meshability(mesh, frames, matchings).counts : r.defects_before;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_REPAIR_SINGULARITY_GRAPH_H
