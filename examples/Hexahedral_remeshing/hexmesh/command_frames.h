@@ -46,7 +46,7 @@ inline std::vector<std::string> frames_options()
   return options;
 }
 
-inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "no-chord-split", "no-acute-grading", "quiet"}; }
+inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "no-repair", "no-chord-split", "no-acute-grading", "quiet"}; }
 
 // Pipeline visitor: per-stage progress on stderr (stages over a second), smoothing notes.
 struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipeline_visitor
@@ -67,7 +67,7 @@ struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipelin
 struct Frame_field_options
 {
   CGAL::Hexahedral_remeshing::Valence_heuristic heuristic;
-  bool baseline = false, realign = true, quiet = false;
+  bool baseline = false, realign = true, repair = true, quiet = false;
   // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
   double acute_edge_band = -1;
 };
@@ -78,6 +78,7 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   o.heuristic = heuristic_option(args);
   o.baseline = args.has("baseline");
   o.realign = !args.has("no-realign");
+  o.repair = !args.has("no-repair");
   o.quiet = args.has("quiet");
   if(args.has("acute-edge-band")) {
     o.acute_edge_band = args.number("acute-edge-band", 0.);
@@ -151,6 +152,53 @@ inline double read_frame_field_input(const Arguments& args, const std::string& i
   return seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// "improper_edge 3, jog 12" (the reasons with violations), or "none".
+inline std::string meshability_counts(const std::array<std::size_t, CGAL::Hexahedral_remeshing::number_of_meshability_reasons>& c)
+{
+  std::ostringstream s;
+  for(std::size_t k = 0; k < c.size(); ++k)
+    if(c[k] > 0) s << (s.tellp() > 0 ? ", " : "") << CGAL::Hexahedral_remeshing::meshability_reason_name(CGAL::Hexahedral_remeshing::Meshability_reason(k)) << " " << c[k];
+  return s.tellp() > 0 ? s.str() : std::string("none");
+}
+
+// The local meshability check before and after the repair, and the repair's operations.
+inline void print_meshability(std::ostream& out, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& r)
+{
+  out << "  meshability         before the repair: " << meshability_counts(r.meshability_before.counts) << "\n";
+  if(r.repaired) {
+    std::ostringstream ops;
+    for(const auto& o : r.repair.operations) if(o.second > 0) ops << (ops.tellp() > 0 ? ", " : "") << o.first << " " << o.second;
+    out << "  repair              " << r.repair.changed_faces << " face matchings changed (" << (ops.tellp() > 0 ? ops.str() : std::string("no operation"))
+        << "), " << std::fixed << std::setprecision(3) << r.repair.seconds << " s\n" << std::defaultfloat;
+  } else {
+    out << "  repair              not run (--no-repair)\n";
+  }
+  out << "  meshability         final field: " << meshability_counts(r.meshability.counts) << "\n";
+}
+
+inline void add_meshability_counts(Json& json, const char* name, const std::array<std::size_t, CGAL::Hexahedral_remeshing::number_of_meshability_reasons>& c)
+{
+  json.begin(name);
+  for(std::size_t k = 0; k < c.size(); ++k)
+    json.value(CGAL::Hexahedral_remeshing::meshability_reason_name(CGAL::Hexahedral_remeshing::Meshability_reason(k)), c[k]);
+  json.end();
+}
+
+// JSON "meshability": the counts by reason before the repair, after the surgery and for the final
+// field, the repair's operations and seconds.
+inline void add_meshability(Json& json, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& r)
+{
+  json.begin("meshability");
+  add_meshability_counts(json, "before_repair", r.meshability_before.counts);
+  add_meshability_counts(json, "after_surgery", r.repaired ? r.repair.defects_after : r.meshability_before.counts);
+  add_meshability_counts(json, "final", r.meshability.counts);
+  json.value("final_graph_defects", r.meshability.graph_defects());
+  json.begin("repair").value("performed", r.repaired).value("changed_faces", r.repair.changed_faces);
+  for(const auto& o : r.repair.operations) json.value(o.first, o.second);
+  json.value("seconds", r.repair.seconds).end();
+  json.end();
+}
+
 // Runs the frame-field pipeline with progress; an impossible prescription stays an Input_error (exit 3),
 // any other failure becomes a Stage_error (exit 4). `band`: radius of the fixed frames along acute
 // valence-1 edges when --acute-edge-band is absent.
@@ -165,8 +213,8 @@ run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, co
   try {
     return HR::compute_frame_field_pipeline(
       mesh, HP::valence_heuristic(o.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
-                                  HP::baseline(o.baseline, HP::realignment(o.realign,
-                                  HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band))))).visitor(std::ref(visitor)));
+                                  HP::baseline(o.baseline, HP::realignment(o.realign, HP::singularity_repair(o.repair,
+                                  HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band)))))).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {
@@ -224,7 +272,7 @@ inline int command_frames(const Arguments& args)
   }
   if(args.has("singularities")) {
     const std::string f = args.value("singularities");
-    outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, g); });
+    outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, g, r.meshability); });
   }
   if(args.has("valences-out")) {
     const std::string f = args.value("valences-out");
@@ -277,6 +325,7 @@ inline int command_frames(const Arguments& args)
         .value("dangling_vertices", g.dangling_vertices.size())
         .value("zipper_vertices", g.zipper_vertices.size())
         .end();
+    add_meshability(json, r);
     json.begin("boundary_valences")
         .value("total", r.boundary_valences.total)
         .value("matched", r.boundary_valences.matched)
@@ -301,6 +350,7 @@ inline int command_frames(const Arguments& args)
         .value("initialization", r.frame_field.initialization_seconds)
         .value("smoothing", r.frame_field.smoothing_seconds)
         .value("matchings", r.matchings_seconds)
+        .value("repair", r.repair.seconds)
         .value("realignment", r.realignment.seconds)
         .value("total", r.seconds)
         .end();
@@ -343,6 +393,7 @@ inline int command_frames(const Arguments& args)
               << "  boundary valences   " << r.boundary_valences.matched << "/" << r.boundary_valences.total
               << " as prescribed (" << r.boundary_valences.mismatched << " mismatched); achieved "
               << histogram(r.boundary_valences.histogram) << "; edges below 45 degrees: " << histogram(by_class[0]) << "\n";
+    print_meshability(std::cout, r);
     if(r.realigned)
       std::cout << std::scientific << std::setprecision(1) << "  realignment         alignment error "
                 << r.realignment.alignment_error << ", changed matchings " << r.realignment.changed_matchings

@@ -33,7 +33,7 @@ inline std::vector<std::string> remesh_options()
   return options;
 }
 
-inline std::vector<std::string> remesh_flags() { return {"baseline", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> remesh_flags() { return {"baseline", "no-repair", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 inline int command_remesh(const Arguments& args)
 {
@@ -68,9 +68,9 @@ inline int command_remesh(const Arguments& args)
     return CGAL::hexahedral_remeshing(
       mesh, hexes,
       HP::valence_heuristic(options.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
-        HP::baseline(options.baseline, HP::realignment(options.realign,
+        HP::baseline(options.baseline, HP::realignment(options.realign, HP::singularity_repair(options.repair,
         HP::hexahedral_smoothing(!args.has("no-smoothing"), HP::acute_edge_band_radius(options.acute_edge_band,
-        HP::integer_grid_map_output(std::ref(map), size))))))).visitor(std::ref(visitor)));
+        HP::integer_grid_map_output(std::ref(map), size)))))))).visitor(std::ref(visitor)));
   };
   try {
     if(target > 0) r = run(HP::target_edge_length(target));
@@ -93,7 +93,7 @@ inline int command_remesh(const Arguments& args)
   }
   if(args.has("singularities") && write_hexes) {
     const std::string f = args.value("singularities");
-    outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, r.frame_field.singularities); });
+    outputs.write({f}, [&] { HR::IO::write_VTK_singularity_graph(f, mesh, r.frame_field.singularities, r.frame_field.meshability); });
   }
   if(args.has("valences-out") && write_hexes) {
     const std::string v = args.value("valences-out");
@@ -107,7 +107,7 @@ inline int command_remesh(const Arguments& args)
     const HR::Frame_field_pipeline_result& f = r.frame_field;
     Json json;
     json.begin().value("input", in).value("output", write_hexes ? out : std::string()).value("status", HR::status_name(r.status))
-        .value("message", r.message).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra);
+        .value("message", r.message).value("failed_stage", r.failed_stage).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra);
     json.begin("frame_field")
         .value("energy", f.frame_field.energy)
         .value("E_initial", f.constraints.initial_energy)
@@ -120,6 +120,7 @@ inline int command_remesh(const Arguments& args)
         .value("fixed_frames", f.fixed_frames.size())
         .value("redirected_directions", f.redirected_directions)
         .end();
+    add_meshability(json, f);
     add_integer_grid_map(json, r.map, r.map_check, agreement);
     json.begin("extraction")
         .value("hexahedra", r.extraction.hexahedra)
@@ -172,6 +173,7 @@ inline int command_remesh(const Arguments& args)
                                          : "; " + std::to_string(f.fixed_frames.size()) +
                                              " frames fixed around acute valence-1 edges")
               << "\n";
+    print_meshability(std::cout, f);
     print_integer_grid_map(std::cout, r.map, r.map_check, agreement);
     if(hexes.number_of_hexahedra() > 0) {
       print_hexahedral_mesh_check(std::cout, r.check);
@@ -197,6 +199,7 @@ inline int command_remesh(const Arguments& args)
     std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", frame field "
               << f.seconds << ", map " << r.map.seconds << ", extraction " << r.extraction.seconds << ", smoothing "
               << r.smoothing.seconds << ", check " << r.check_seconds << ", total " << r.seconds << "\n" << std::defaultfloat;
+    if(!ok) std::cout << "  failed stage        " << r.failed_stage << ": " << r.failure_reason << "\n";
     if(write_hexes) std::cout << "  hex mesh            " << out << (ok ? "" : " (partial: --keep-partial)") << "\n";
     if(args.has("frames")) std::cout << "  ParaView            " << args.value("frames") << " (frames: Glyph on frame_u, frame_v, frame_w)\n";
     if(args.has("singularities")) std::cout << "  ParaView            " << args.value("singularities") << " (singular curves)\n";
@@ -204,7 +207,7 @@ inline int command_remesh(const Arguments& args)
     if(args.has("hexex") && write_hexes) std::cout << "  map                 " << args.value("hexex") << " (the integer-grid map, libHexEx's format)\n";
     if(args.has("json")) std::cout << "  report              " << args.value("json") << "\n";
   }
-  if(!ok) throw Stage_error(in + ": " + HR::status_name(r.status) + ": " + r.message +
+  if(!ok) throw Stage_error(in + ": " + HR::status_name(r.status) + " (failed at the " + r.failed_stage + " stage): " + r.message +
                             (write_hexes ? " (partial mesh written)" : " (no hex mesh written)"));
   return EXIT_OK;
 }

@@ -99,6 +99,14 @@ struct Hexahedral_remeshing_result
   Hexahedral_remeshing_status status = Hexahedral_remeshing_status::NO_HEXAHEDRA;
   /// One line saying what went wrong (empty when `status` is `OK`).
   std::string message;
+  /// The first stage that failed when `status` is not `OK` (empty otherwise): `"frame_field"` (the
+  /// field is not locally meshable after the repair), `"seamless_map"` (the map folds before any
+  /// rounding), `"rounding"` (the rounded map folds and the repair of the folds could not unfold it),
+  /// `"extraction"` (cells of the map could not be completed), `"smoothing"` (hexahedra still
+  /// inverted after the untangling), `"check"` (a valid mesh whose boundary differs from the solid's).
+  std::string failed_stage;
+  /// Why that stage failed, in one line (counts by reason for the frame field).
+  std::string failure_reason;
   /// Tetrahedra of the mesh the pipeline ran on (after the preprocessing of the input).
   std::size_t tetrahedra = 0;
   /// Valences, constraints, frame field, matchings, singularity graph, realignment.

@@ -6,6 +6,7 @@
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/local_meshability.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_polylines.h>
@@ -103,6 +104,67 @@ void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_
     cell_arrays[1].values.push_back(double(c.edges.size()));
     cell_arrays[2].values.push_back(c.closed ? 1. : 0.);
   }
+  write_VTK_polylines(filename, points, lines, cell_arrays, point_arrays);
+}
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Writes the singular edges of a frame field with the verdict of the local meshability check, one
+/// VTK line cell per singular edge (every edge of `graph.curves`), so that the reason can be read
+/// per edge. Points: the vertices of those edges and the vertices where the check fails, point
+/// arrays `vertex` (index in `mesh`) and `reason` (the `Meshability_reason` of a failing vertex:
+/// 2 dangling end, 3 zipper, 4 invalid node, 5 boundary contact; -1 none). Cell arrays: `valence`
+/// (3, 5, 0 improper), `curve` (index in `graph.curves`), `reason` (0 improper edge, 1 jog, -1 none).
+/// \param filename the output file (written atomically)
+/// \param mesh the mesh the graph was computed on
+/// \param graph the singularity graph
+/// \param check the local check of the same field (`check_local_meshability()`)
+/// \throws Error if the file cannot be written or the graph or the check belong to another mesh.
+template <class Traits>
+void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_mesh_3<Traits>& mesh,
+                                 const Singularity_graph& graph, const Local_meshability_report& check)
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  const std::size_t none = std::size_t(-1);
+  if(check.edge_class.size() != mesh.number_of_edges())
+    throw Error(filename + ": the meshability check is not of this mesh");
+  std::vector<std::size_t> local(mesh.number_of_vertices(), none);
+  std::vector<int> vertex_reason(mesh.number_of_vertices(), -1);
+  std::vector<int> edge_reason(mesh.number_of_edges(), -1);
+  for(const Meshability_violation& v : check.violations) {
+    if(v.reason == Meshability_reason::IMPROPER_EDGE || v.reason == Meshability_reason::JOG) edge_reason[v.index] = int(v.reason);
+    else if(v.reason != Meshability_reason::FEATURE_SECTOR && v.reason != Meshability_reason::DISAGREEING_FACE)
+      vertex_reason[v.index] = int(v.reason);
+  }
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::vector<std::size_t> > lines;
+  std::vector<VTK_array> cell_arrays(3), point_arrays(2);
+  cell_arrays[0].name = "valence";
+  cell_arrays[1].name = "curve";
+  cell_arrays[2].name = "reason";
+  point_arrays[0].name = "vertex";
+  point_arrays[1].name = "reason";
+  auto add_point = [&](std::uint32_t v) {
+    if(v >= mesh.number_of_vertices()) throw Error(filename + ": vertex " + std::to_string(v) + " is not a vertex of the mesh");
+    if(local[v] == none) {
+      local[v] = points.size();
+      const auto& p = mesh.point(Index(v));
+      points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+      point_arrays[0].values.push_back(double(v));
+      point_arrays[1].values.push_back(double(vertex_reason[v]));
+    }
+    return local[v];
+  };
+  for(std::size_t c = 0; c < graph.curves.size(); ++c)
+    for(std::uint32_t e : graph.curves[c].edges) {
+      if(e >= mesh.number_of_edges()) throw Error(filename + ": curve edge " + std::to_string(e) + " is not an edge of the mesh");
+      const auto& ev = mesh.edge_vertices(Index(e));
+      lines.push_back({add_point(std::uint32_t(ev[0])), add_point(std::uint32_t(ev[1]))});
+      cell_arrays[0].values.push_back(double(graph.curves[c].valence));
+      cell_arrays[1].values.push_back(double(c));
+      cell_arrays[2].values.push_back(double(edge_reason[e]));
+    }
+  for(Index v = 0; v < mesh.number_of_vertices(); ++v)
+    if(vertex_reason[v] >= 0) add_point(std::uint32_t(v));
   write_VTK_polylines(filename, points, lines, cell_arrays, point_arrays);
 }
 

@@ -64,6 +64,41 @@ double bounding_box_diagonal(const Tetrahedral_mesh_3<Traits>& mesh)
   return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
 }
 
+// The first stage of a failed run whose output is already broken, and why (design notes §5): the
+// field's local check, then the continuous map, the rounded map, the extraction, the smoothing.
+inline void name_failed_stage(Hexahedral_remeshing_result& r)
+{
+  const Local_meshability_report& m = r.frame_field.meshability;
+  if(m.graph_defects() > 0) {
+    std::string reasons;
+    for(std::size_t k = 0; k < m.counts.size(); ++k)
+      if(m.counts[k] > 0 && Meshability_reason(k) != Meshability_reason::DISAGREEING_FACE && Meshability_reason(k) != Meshability_reason::FEATURE_SECTOR)
+        reasons += (reasons.empty() ? "" : ", ") + std::string(meshability_reason_name(Meshability_reason(k))) + " " + std::to_string(m.counts[k]);
+    r.failed_stage = "frame_field";
+    r.failure_reason = "the singularity graph is not locally meshable after the repair (" + reasons + ")";
+  } else if(r.map.relaxed_inverted_tetrahedra > 0 && r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
+    r.failed_stage = "seamless_map";
+    r.failure_reason = std::to_string(r.map.relaxed_inverted_tetrahedra) + " tetrahedra inverted in the map before rounding, " +
+                       std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
+                       " flat after the repair of the folds";
+  } else if(r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
+    r.failed_stage = "rounding";
+    r.failure_reason = "the rounded map folds " + std::to_string(r.map.rounded_inverted_tetrahedra) + " tetrahedra; " +
+                       std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
+                       " flat after the repair of the folds";
+  } else if(r.extraction.incomplete_cells + r.extraction.untraced_corners > 0) {
+    r.failed_stage = "extraction";
+    r.failure_reason = std::to_string(r.extraction.incomplete_cells) + " cells and " + std::to_string(r.extraction.untraced_corners) +
+                       " corners of the map could not be completed";
+  } else if(r.check.inverted_hexahedra > 0) {
+    r.failed_stage = "smoothing";
+    r.failure_reason = std::to_string(r.check.inverted_hexahedra) + " hexahedra still inverted after the untangling";
+  } else {
+    r.failed_stage = "check";
+    r.failure_reason = r.message;
+  }
+}
+
 // The paper's pipeline on a tetrahedral mesh: frame field (valences, constraints, field, matchings,
 // realignment) -> integer-grid map -> extraction -> untangling and smoothing -> check. Data flows forward:
 // each stage reads only the outputs of the stages before it.
@@ -117,6 +152,7 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
     r.status = Hexahedral_remeshing_status::NO_HEXAHEDRA;
     r.message = std::string("the integer-grid map (status ") + status_name(r.map.status) +
                 ", " + std::to_string(r.map.inverted_tetrahedra) + " inverted tetrahedra) has no complete integer cell";
+    name_failed_stage(r);
     r.seconds = seconds_since(start);
     return r;
   }
@@ -187,6 +223,7 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
                 " cells left out by the extraction (hex volume " + std::to_string(r.volume_ratio) +
                 " of the solid's); integer-grid map status " + status_name(r.map.status);
   }
+  if(r.status != Hexahedral_remeshing_status::OK) name_failed_stage(r);
   r.seconds = seconds_since(start);
   return r;
 }

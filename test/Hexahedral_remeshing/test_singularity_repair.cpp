@@ -1,0 +1,234 @@
+// Tests of the local meshability check and of the repair of the singularity graph, checked against
+// the independent evaluation of the holonomies of independent_holonomy.h (not the package's flags):
+// a field with one straight valence-3 axis (meshable, left bitwise unchanged), the same field with a
+// zigzag (repaired back to the straight axis), and every model of ../shared/data (never worse).
+#include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
+#include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
+#include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/local_meshability.h>
+#include <CGAL/Hexahedral_remeshing/repair_singularity_graph.h>
+
+#include <gtest/gtest.h>
+
+#include "independent_holonomy.h"
+#include "shared_models.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace HR = CGAL::Hexahedral_remeshing;
+typedef HR::Tetrahedral_mesh_3<> Mesh;
+typedef Mesh::Index Index;
+typedef Mesh::Point_3 Point;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<Eigen::Vector3d> points_of(const Mesh& m)
+{
+  std::vector<Eigen::Vector3d> p;
+  for(Index v = 0; v < m.number_of_vertices(); ++v)
+    p.emplace_back(CGAL::to_double(m.point(v).x()), CGAL::to_double(m.point(v).y()), CGAL::to_double(m.point(v).z()));
+  return p;
+}
+
+std::vector<std::array<std::size_t, 4> > tets_of(const Mesh& m)
+{
+  std::vector<std::array<std::size_t, 4> > t;
+  for(Index i = 0; i < m.number_of_tetrahedra(); ++i) {
+    const auto& v = m.tetrahedron_vertices(i);
+    t.push_back({{v[0], v[1], v[2], v[3]}});
+  }
+  return t;
+}
+
+// The verdict of the kept matchings (the matrices of the package's group table, the rest independent).
+independent::Field_verdict evaluate_matchings(const Mesh& m, const std::vector<Eigen::Matrix3d>& frames, const HR::Matchings& matchings)
+{
+  return independent::evaluate(points_of(m), tets_of(m), frames, [&](std::size_t b, std::size_t a) {
+    for(int i = 0; i < 4; ++i)
+      if(m.tetrahedron_neighbor(Index(a), i) == Index(b)) {
+        const Index f = m.tetrahedron_face(Index(a), i);
+        const Eigen::Matrix3d g = HR::internal::octahedral_group().matrix(matchings.face_matching[f]);
+        return Eigen::Matrix3d(m.face_tetrahedra(f)[0] == Index(b) ? g : g.transpose());
+      }
+    ADD_FAILURE() << "tetrahedra " << a << " and " << b << " are not neighbours";
+    return Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+  });
+}
+
+// A box [-3, 3]^2 x [0, 8] of 1 x 1 x 2 cells, each split into six tetrahedra around its diagonal
+// (0,0,0)-(1,1,2): the line x = y = 0 is a chain of four mesh edges, and no edge is 45 degrees off
+// the z axis (a jog would be a borderline case).
+Mesh kuhn_box()
+{
+  HR::Tetrahedral_soup_3<Point> soup;
+  const int n = 3, h = 4;
+  auto id = [&](int i, int j, int k) { return std::size_t(((k * (2 * n + 1)) + (j + n)) * (2 * n + 1) + (i + n)); };
+  for(int k = 0; k <= h; ++k)
+    for(int j = -n; j <= n; ++j)
+      for(int i = -n; i <= n; ++i) soup.points.emplace_back(i, j, 2 * k);
+  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for(int k = 0; k < h; ++k)
+    for(int j = -n; j < n; ++j)
+      for(int i = -n; i < n; ++i)
+        for(const auto& p : paths) {
+          std::array<int, 3> c = {{i, j, k}};
+          std::array<std::size_t, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s) { ++c[p[s]]; t[s + 1] = id(c[0], c[1], c[2]); }
+          soup.tetrahedra.push_back(t);
+        }
+  Mesh m;
+  HR::build_tetrahedral_mesh(soup, m);
+  return m;
+}
+
+// Frames turning a quarter turn about z once around the line x = y = 0: a valence-3 or -5 axis.
+std::vector<Eigen::Matrix3d> axis_field(const Mesh& m)
+{
+  std::vector<Eigen::Matrix3d> frames;
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(Index v : m.tetrahedron_vertices(t)) c += points_of(m)[v];
+    const double phi = std::atan2(c.y(), c.x());
+    frames.push_back(Eigen::AngleAxisd(phi / 4, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+  }
+  return frames;
+}
+
+bool on_axis(const Eigen::Vector3d& p) { return std::abs(p.x()) < 1e-9 && std::abs(p.y()) < 1e-9; }
+
+} // namespace
+
+TEST(Meshability, StraightAxisIsMeshableAndKeptBitwise)
+{
+  const Mesh m = kuhn_box();
+  const auto frames = axis_field(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const auto verdict = independent::evaluate_frames(points_of(m), tets_of(m), frames);
+  const auto points = points_of(m);
+  ASSERT_EQ(verdict.singular.size(), 4u);
+  for(const auto& e : verdict.singular) {
+    EXPECT_TRUE(on_axis(points[e.vertices[0]]) && on_axis(points[e.vertices[1]]));
+    EXPECT_EQ(e.kind, verdict.singular[0].kind);
+    EXPECT_TRUE(e.kind == 3 || e.kind == 5);
+  }
+  EXPECT_EQ(verdict.defects(), 0u);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  EXPECT_EQ(check.total(), 0u);
+  const std::vector<int> before = matchings.face_matching;
+  const auto r = HR::repair_singularity_graph(m, frames, matchings);
+  EXPECT_EQ(r.changed_faces, 0u);
+  EXPECT_EQ(r.applied(), 0u);
+  EXPECT_TRUE(matchings.face_matching == before);
+}
+
+TEST(Meshability, ZigzagRepairedToTheStraightAxis)
+{
+  const Mesh m = kuhn_box();
+  const auto frames = axis_field(m);
+  const auto points = points_of(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const auto straight = evaluate_matchings(m, frames, matchings);
+  // move the axis edge (0,0,2)-(0,0,4) across a triangle of its ring whose third vertex is at z = 2:
+  // the curve then steps sideways along an edge perpendicular to its axis
+  Index a = Mesh::null_index, b = Mesh::null_index;
+  for(Index v = 0; v < m.number_of_vertices(); ++v) {
+    if(on_axis(points[v]) && points[v].z() == 2) a = v;
+    if(on_axis(points[v]) && points[v].z() == 4) b = v;
+  }
+  const Index e = m.find_edge(a, b);
+  ASSERT_NE(e, Mesh::null_index);
+  Index zigzag_face = Mesh::null_index;
+  for(Index f : m.edge_ring_faces(e)) {
+    Index c = Mesh::null_index;
+    for(Index v : m.face_vertices(f)) if(v != a && v != b) c = v;
+    if(points[c].z() == 2 && !m.is_boundary_vertex(c)) { zigzag_face = f; break; }
+  }
+  ASSERT_NE(zigzag_face, Mesh::null_index);
+  const int original = matchings.face_matching[zigzag_face];
+  for(int g = 0; g < 24; ++g) {
+    matchings.face_matching[zigzag_face] = g;
+    if(HR::internal::edge_holonomy(m, matchings.face_matching, e) == 0) break;
+  }
+  ASSERT_NE(matchings.face_matching[zigzag_face], original);
+  const auto zigzag = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(zigzag.singular.size(), 5u);
+  EXPECT_GE(zigzag.jogs, 1u);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  EXPECT_EQ(check.count(HR::Meshability_reason::JOG), zigzag.jogs);
+  EXPECT_EQ(check.count(HR::Meshability_reason::DISAGREEING_FACE), 1u);
+
+  const auto r = HR::repair_singularity_graph(m, frames, matchings);
+  EXPECT_GE(r.applied(), 1u);
+  EXPECT_EQ(r.defects_before[std::size_t(HR::Meshability_reason::JOG)], zigzag.jogs);
+  EXPECT_EQ(r.defects_after[std::size_t(HR::Meshability_reason::JOG)], 0u);
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(repaired.defects(), 0u);
+  ASSERT_EQ(repaired.singular.size(), 4u);
+  for(const auto& s : repaired.singular) {
+    EXPECT_TRUE(on_axis(points[s.vertices[0]]) && on_axis(points[s.vertices[1]]));
+    EXPECT_EQ(s.kind, straight.singular[0].kind); // the same valence
+  }
+  EXPECT_EQ(matchings.face_matching[zigzag_face], original);
+}
+
+TEST(Meshability, SingularitiesFileCarriesTheReasonPerEdge)
+{
+  const Mesh m = kuhn_box();
+  const auto frames = axis_field(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const HR::Singularity_graph g = HR::compute_singularity_graph(m, frames, matchings);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  const std::string file = (fs::temp_directory_path() / "hexrem_singularities_reasons.vtk").string();
+  HR::IO::write_VTK_singularity_graph(file, m, g, check);
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  EXPECT_NE(s.find("reason"), std::string::npos);
+  EXPECT_NE(s.find("LINES 4 12"), std::string::npos) << s.substr(0, 400); // four edges, two points each
+  std::remove(file.c_str());
+}
+
+// Every shared model: the step-2 field realigned with and without the repair. Checked independently
+// from the kept matchings (defects never more than before the repair) and from the realigned frames
+// alone (never more than the realigned field without the repair).
+TEST(Meshability, SharedModelsNeverWorse)
+{
+  const auto files = shared_models();
+  if(files.empty()) GTEST_SKIP() << "../shared/data not present";
+  for(const std::string& f : files) {
+    SCOPED_TRACE(f);
+    const std::string name = fs::path(f).stem().string();
+    Mesh m;
+    HR::IO::read_tetrahedral_mesh(f, m, HR::parameters::split_boundary_chords(true));
+    const auto step2 = HR::compute_frame_field_pipeline(m, HR::parameters::realignment(false, HR::parameters::singularity_repair(false)));
+    const auto before = evaluate_matchings(m, step2.frames, step2.matchings);
+    EXPECT_EQ(before.defects(), step2.meshability_before.graph_defects() - step2.meshability_before.count(HR::Meshability_reason::INVALID_NODE) -
+                                  step2.meshability_before.count(HR::Meshability_reason::BOUNDARY_CONTACT)) << name;
+    std::vector<Eigen::Matrix3d> plain = step2.frames, repaired = step2.frames;
+    HR::realign_frame_field(m, plain, step2.matchings, step2.directions);
+    HR::Matchings matchings = step2.matchings;
+    const auto r = HR::repair_singularity_graph(m, step2.frames, matchings);
+    const auto kept = evaluate_matchings(m, step2.frames, matchings);
+    EXPECT_LE(kept.defects(), before.defects()) << name;
+    HR::realign_frame_field(m, repaired, matchings, step2.directions);
+    const auto alone_plain = independent::evaluate_frames(points_of(m), tets_of(m), plain);
+    const auto alone_repaired = independent::evaluate_frames(points_of(m), tets_of(m), repaired);
+    EXPECT_LE(alone_repaired.defects(), alone_plain.defects()) << name;
+    std::printf("%-28s tets %6zu  defects (kept matchings) %4zu -> %4zu, from the realigned frames alone %4zu -> %4zu "
+                "(improper %zu jogs %zu zippers %zu), %zu faces changed, %.3f s\n",
+                name.c_str(), m.number_of_tetrahedra(), before.defects(), kept.defects(), alone_plain.defects(),
+                alone_repaired.defects(), alone_repaired.improper, alone_repaired.jogs, alone_repaired.zippers, r.changed_faces,
+                r.seconds);
+  }
+}
