@@ -52,7 +52,7 @@ void run(const std::string& name, const Mesh& mesh, int runs)
             << std::setw(18) << counts(r.meshability.counts) << std::setw(18) << counts(alone.counts) << std::setw(7)
             << r.meshability.count(HR::Meshability_reason::DISAGREEING_FACE) << std::setw(6)
             << r.meshability.count(HR::Meshability_reason::FEATURE_SECTOR) << std::setw(14)
-            << (operations.empty() ? "-" : operations) << std::fixed << std::setprecision(3) << std::setw(9)
+            << (operations.empty() ? "-" : (r.repair.accepted ? "" : "x ") + operations) << std::fixed << std::setprecision(3) << std::setw(9)
             << median(repair_seconds) << std::setw(9) << median(field_seconds) << "\n" << std::defaultfloat;
 }
 
@@ -78,9 +78,9 @@ int main(int argc, char** argv)
       files.insert(files.end(), found.begin(), found.end());
     }
   }
-  std::cout << "defects improper/jog/zipper/node/contact: before the repair | after the surgery | after the realignment"
-               " (kept matchings) | from the frames alone; disagreeing faces and feature sectors after the realignment;"
-               " changes by operation (move/zigzag/search); seconds of the repair and of the frame field (median of "
+  std::cout << "defects improper/jog/zipper/node/contact: field of step 3 before the repair | realigned field after the"
+               " surgery | returned field (kept matchings) | returned frames alone; disagreeing faces and feature sectors after the realignment;"
+               " changes by operation (move/zigzag/search/slide; x: not kept); seconds of the repair and of the frame field (median of "
             << runs << ")\n";
   for(const std::string& f : files) {
     Mesh mesh;

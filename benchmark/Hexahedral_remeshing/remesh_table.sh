@@ -1,20 +1,21 @@
 #!/usr/bin/env bash
-# One row per model: hexmesh remesh (prescribed valences, and --baseline) on every model of ../shared/data
-# (or the files given), with the outcome, hex count, scaled Jacobian, Hausdorff distance, feature coverage,
-# hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory (GNU time).
-#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--timeout S] [FILE...]
+# One row per model: hexmesh remesh (prescribed valences, and --baseline, and --no-repair) on every model of
+# ../shared/data (or the files given), with the outcome, the stage a failed run failed at, the defects of the
+# field's local meshability check before and after the repair, hex count, scaled Jacobian, Hausdorff distance,
+# feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory.
+#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/remesh_table"
 mkdir -p "$out"
-modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline)
-printf '%-28s %-10s %8s %7s %-17s %6s %6s %9s %6s %9s %8s %8s %8s %8s %7s\n' model mode tets hexes status minSJ meanSJ \
-  hausdorff cover valences field_s map_s extr_s smooth_s peakMB
+modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -eq 1 ] && modes+=(no_repair)
+printf '%-28s %-10s %8s %7s %-17s %-12s %9s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects minSJ meanSJ \
+  hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB
 for f in "${files[@]}"; do
   name=$(basename "$f" .vtk)
   for mode in "${modes[@]}"; do
-    flag=(); [ "$mode" = baseline ] && flag=(--baseline)
+    flag=(); [ "$mode" = baseline ] && flag=(--baseline); [ "$mode" = no_repair ] && flag=(--no-repair)
     json="$out/$name.$mode.json"; rm -f "$json"
     /usr/bin/time -f '%M' -o "$out/$name.$mode.mem" timeout "$limit" "$hexmesh" remesh "$f" "${flag[@]}" --quiet \
       --keep-partial --out "$out/$name.$mode.mesh" --json "$json" > /dev/null 2> "$out/$name.$mode.err"
@@ -30,12 +31,17 @@ if not os.path.exists(path):
     sys.exit(0)
 r = json.load(open(path))
 h, f, s = r['hex_mesh'], r['features'], r['seconds']
+m = r.get('meshability', {})
+graph = lambda c: sum(v for k, v in c.items() if k not in ('feature_sector', 'disagreeing_face'))
+defects = '%d>%d' % (graph(m['before_repair']), graph(m['final'])) if m else '-'
+repair_s = m.get('repair', {}).get('seconds', 0.) if m else 0.
 hd = f['relative_hausdorff_distance']  # null without a smoothed mesh
-print('%-28s %-10s %8d %7d %-17s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.2f %8.2f %8.2f %7.0f' % (
-    name, mode, r['tetrahedra'], h['hexahedra'], r['status'], h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
+print('%-28s %-10s %8d %7d %-17s %-12s %9s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f' % (
+    name, mode, r['tetrahedra'], h['hexahedra'], r['status'], r.get('failed_stage') or '-', defects,
+    h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
     '-' if hd is None else '%.2e' % hd, f['coverage'],
     '%d/%d' % (f['hex_feature_edges_with_prescribed_valence'], f['hex_feature_edges']),
-    s['frame_field'], s['map'], s['extraction'], s['smoothing'], peak))
+    s['frame_field'], repair_s, s['map'], s['extraction'], s['smoothing'], peak))
 PY
   done
 done

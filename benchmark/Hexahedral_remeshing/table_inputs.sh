@@ -1,13 +1,14 @@
 # Sourced by remesh_table.sh and map_table.sh: the build's hexmesh, and the arguments
-# [--timeout S] [--baseline-too] [FILE...] parsed into limit, baseline and files (default: every model of
+# [--timeout S] [--baseline-too] [--no-repair-too] [FILE...] parsed into limit, baseline, norepair and files (default: every model of
 # ../shared/data). Sets root, build, hexmesh, limit, baseline, files.
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
 hexmesh="$build/examples/Hexahedral_remeshing/hexmesh"
-baseline=0; limit=600; files=()
+baseline=0; norepair=0; limit=600; files=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --baseline-too) baseline=1 ;;
+    --no-repair-too) norepair=1 ;;
     --timeout) limit="$2"; shift ;;
     *) files+=("$1") ;;
   esac

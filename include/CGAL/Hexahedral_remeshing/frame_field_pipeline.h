@@ -14,6 +14,7 @@
 #include <CGAL/Hexahedral_remeshing/realign_frame_field.h>
 #include <CGAL/Hexahedral_remeshing/repair_singularity_graph.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/acute_edge_frames.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/repair_realigned_field.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 
 #include <Eigen/Dense>
@@ -51,8 +52,8 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(acute_edge_band_radius)
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of the pipeline: the hooks of `Frame_field_visitor`, called for every stage of
 /// the pipeline (`"valences"`, `"constraints"`, `"setup"`, `"initialization"`, `"smoothing"`,
-/// `"matchings"`, `"repair"`, `"realignment"`), in this order (`"smoothing"`, `"repair"` and
-/// `"realignment"` only when they run).
+/// `"matchings"`, `"realignment"`, `"repair"`), in this order (`"smoothing"`, `"realignment"` and
+/// `"repair"` only when they run).
 struct Frame_field_pipeline_visitor : Frame_field_visitor
 {
 };
@@ -83,9 +84,10 @@ struct Frame_field_pipeline_result
   std::size_t redirected_directions = 0;
   /// Report of the frame-field solver.
   Frame_field_result frame_field;
-  /// Matchings of the field of step 2, repaired (kept by the realignment).
+  /// Matchings of the field of step 2 (kept by the realignment), repaired if the repair was accepted.
   Matchings matchings;
-  /// Singularity graph of the field of step 2 with the repaired matchings.
+  /// Singularity graph of the field of step 2; after an accepted repair, of the returned frames with
+  /// the repaired matchings.
   Singularity_graph singularities;
   /// Local meshability check of the field of step 2 with its closest matchings, before the repair
   /// (prescribed valences and the directions `v` for the feature sectors).
@@ -139,8 +141,12 @@ struct Frame_field_pipeline_result
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{singularity_repair}
-///     \cgalParamDescription{repair the singularity graph by matching surgery before the realignment
-///       (`repair_singularity_graph()`, with `maximum_repair_steps` if given)}
+///     \cgalParamDescription{repair the singularity graph by matching surgery (`repair_singularity_graph()`,
+///       with `maximum_repair_steps` if given). After the realignment, the surgery uses the realigned frames,
+///       the frames are re-optimized with the repaired matchings fixed (the realignment's solver), and the
+///       result is kept only if it is no worse with the kept matchings and from the frames alone, and
+///       better in one (`Singularity_repair_result::accepted`); without realignment, the matchings of the
+///       field of step 3 are repaired in place}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
@@ -233,15 +239,6 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   r.matchings_seconds = seconds_since(t);
   visitor.end_stage("matchings", r.matchings_seconds);
 
-  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), true)) {
-    visitor.start_stage("repair");
-    r.repair = repair_singularity_graph(mesh, r.frames, r.matchings, np);
-    r.repaired = true;
-    // an unchanged field keeps its graph bitwise
-    if(r.repair.changed_faces > 0) r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
-    visitor.end_stage("repair", r.repair.seconds);
-  }
-
   if(realign) {
     visitor.start_stage("realignment");
     r.realignment = realign_frame_field(mesh, r.frames, r.matchings, r.directions,
@@ -250,6 +247,20 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
                                                                                     Face_weights::AREA_OVER_DISTANCE))));
     r.realigned = true;
     visitor.end_stage("realignment", r.realignment.seconds);
+  }
+  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), true)) {
+    visitor.start_stage("repair");
+    if(r.realigned) {
+      r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, np,
+                   parameters::tetrahedron_order(order, parameters::face_weights(
+                     choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE))));
+    } else {
+      r.repair = repair_singularity_graph(mesh, r.frames, r.matchings, np);
+    }
+    r.repaired = true;
+    // an unchanged field keeps its graph bitwise
+    if(r.repair.accepted) r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
+    visitor.end_stage("repair", r.repair.seconds);
   }
   r.meshability = check_local_meshability(mesh, r.frames, r.matchings, r.valences,
                                           r.realigned ? boundary_triangle_unit_normals(mesh) : r.directions);

@@ -58,6 +58,21 @@ struct Singularity_repair_result
   std::vector<std::pair<std::string, std::size_t> > operations;
   /// Faces whose matching differs from the input matching at the end.
   std::size_t changed_faces = 0;
+  /// In the pipeline (`compute_frame_field_pipeline()`), which repairs the realigned field and
+  /// re-optimizes its frames: true if the repaired field was kept (no worse with the kept matchings and
+  /// from the frames alone, better in one), false if the field was left as the realignment made it.
+  /// `repair_singularity_graph()` alone sets it to `changed_faces > 0`.
+  bool accepted = false;
+  /// In the pipeline: graph defects of the check (every reason but the feature sectors and the
+  /// disagreeing faces) of the realigned field with the kept matchings, before and after the repair.
+  std::size_t graph_defects_before = 0;
+  /// See `graph_defects_before`.
+  std::size_t graph_defects_after = 0;
+  /// In the pipeline: graph defects of the frames with their own closest matchings (what a reader of
+  /// the frames alone sees), before and after the repair.
+  std::size_t frame_graph_defects_before = 0;
+  /// See `frame_graph_defects_before`.
+  std::size_t frame_graph_defects_after = 0;
   /// Seconds.
   double seconds = 0;
 
@@ -140,6 +155,9 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
   }
   for(std::size_t f = 0; f < input.size(); ++f) r.changed_faces += (input[f] != matchings.face_matching[f]);
   r.defects_after = r.changed_faces > 0 ? check_local_meshability(mesh, frames, matchings).counts : r.defects_before;
+  r.accepted = r.changed_faces > 0;
+  r.graph_defects_before = internal::graph_defect_count(r.defects_before);
+  r.graph_defects_after = internal::graph_defect_count(r.defects_after);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
