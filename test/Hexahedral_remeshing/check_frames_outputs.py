@@ -2,7 +2,7 @@
 # Checks the output files of `hexmesh frames` (used by test_hexmesh_cli.sh):
 #   check_frames_outputs.py report JSON [baseline]      documented keys, consistency, expected valences
 #   check_frames_outputs.py frames VTK JSON             VECTORS frame_u/v/w: one unit right-handed frame per tet
-#   check_frames_outputs.py singularities VTK JSON      POLYDATA polylines with valence and edges cell data
+#   check_frames_outputs.py singularities VTK JSON      POLYDATA lines, one per singular edge: valence, curve, reason
 #   check_frames_outputs.py cubecover PREFIX JSON       .mesh/.fra/.perm as CubeCover reads them; the
 #                                                       permutations are CubeCover's own best fit of the frames
 #                                                       except on the faces whose matching the realignment changed
@@ -126,7 +126,9 @@ def frames(path, json_path):
 
 
 def singularities(path, json_path):
-    s = json.load(open(json_path))['singularities']
+    """One VTK line per singular edge, with its valence, its curve and the reason of the local check."""
+    report = json.load(open(json_path))
+    s, final = report['singularities'], report['meshability']['final']
     lines = vtk_sections(path)
     check(lines[3].strip() == 'DATASET POLYDATA', path + ': not POLYDATA')
     i = 4
@@ -134,24 +136,27 @@ def singularities(path, json_path):
     words = lines[i].split()
     check(words[0] == 'LINES', path + ': no LINES after the points')
     nlines, size = int(words[1]), int(words[2])
-    check(nlines == s['curves'], path + ': %d polylines for %d curves' % (nlines, s['curves']))
-    polylines = [list(map(int, lines[i + 1 + k].split())) for k in range(nlines)]
-    check(sum(len(p) for p in polylines) == size, path + ': LINES size')
-    for p in polylines:
-        check(p[0] == len(p) - 1 and p[0] >= 2, path + ': polyline length')
-        check(all(0 <= x < npoints for x in p[1:]), path + ': polyline index out of range')
+    singular = s['valence3_edges'] + s['valence5_edges'] + s['improper_edges']
+    check(nlines == singular, path + ': %d lines for %d singular edges' % (nlines, singular))
+    check(size == 3 * nlines, path + ': LINES size')
+    cells = [list(map(int, lines[i + 1 + k].split())) for k in range(nlines)]
+    for c in cells:
+        check(c[0] == 2 and all(0 <= x < npoints for x in c[1:]) and c[1] != c[2], path + ': a line is not an edge')
+    check(len(set(tuple(sorted(c[1:])) for c in cells)) == nlines, path + ': an edge written twice')
     if nlines == 0:
         return
     i += 1 + nlines
     check(lines[i].split() == ['CELL_DATA', str(nlines)], path + ': CELL_DATA')
     arrays, _ = read_arrays(lines, i + 1, nlines)
-    check('valence' in arrays and 'edges' in arrays, path + ': cell arrays valence and edges')
-    valence, edges = arrays['valence'][1], arrays['edges'][1]
+    check(all(k in arrays for k in ('valence', 'curve', 'reason')), path + ': cell arrays valence, curve, reason')
+    valence, curve, reason = arrays['valence'][1], arrays['curve'][1], arrays['reason'][1]
     check(all(x in (0, 3, 5) for x in valence), path + ': valence values')
-    for p, e in zip(polylines, edges):
-        check(e == p[0] - 1, path + ': edges != points - 1')
+    check(all(0 <= x < s['curves'] for x in curve) and len(set(curve)) == s['curves'], path + ': curve ids')
     for k, key in ((3, 'valence3_edges'), (5, 'valence5_edges'), (0, 'improper_edges')):
-        check(sum(e for v, e in zip(valence, edges) if v == k) == s[key], path + ': edges of valence %d != %s' % (k, key))
+        check(sum(1 for v in valence if v == k) == s[key], path + ': edges of valence %d != %s' % (k, key))
+    check(sum(1 for r in reason if r == 1) == final['jog'], path + ': jogs != meshability.final.jog')
+    check(sum(1 for r in reason if r == 0) == final['improper_edge'], path + ': improper edges != meshability.final.improper_edge')
+    check(all(r in (-1, 0, 1) for r in reason), path + ': reason values')
 
 
 def tokens(path):
