@@ -278,6 +278,16 @@ grep -q '"components": 1' "$tmp/merged.json" || fail "merged crack: $(cat "$tmp/
 grep -q '"components": 2' "$tmp/kept.json" || fail "kept crack: $(cat "$tmp/kept.json")"
 expect_error 2 "expects refuse, merge or keep" info "$inputs/cracked_interface.vtk" --coincident-vertices glue
 expect_error 2 "expects a positive length" info "$inputs/box_with_cavity.step" --mesh-size 0
+# a solid that touches itself (a sphere cut out of a cube, tangent to its top face at (0.5, 0.5, 1)): said in
+# our words, with the place (issue 29: gmsh's "PLC Error: A segment and a facet intersect at point" alone named none)
+expect_error 3 "sphere_tangent.step: the solid touches itself: near (" remesh "$inputs/sphere_tangent.step" --out "$tmp/tangent.mesh"
+grep -q "leave a gap between those faces or fuse them" "$tmp/err" || fail "tangent sphere: no advice: $(cat "$tmp/err")"
+python3 - "$tmp/err" <<'PY' || fail "tangent sphere: the place is not the tangency point: $(cat "$tmp/err")"
+import re, sys
+x, y, z = map(float, re.search(r"near \(([^,]+), ([^,]+), ([^)]+)\)", open(sys.argv[1]).read()).groups())
+sys.exit(0 if abs(x - 0.5) < 0.1 and abs(y - 0.5) < 0.1 and abs(z - 1) < 0.05 else 1)
+PY
+[ ! -e "$tmp/tangent.mesh" ] || fail "tangent sphere: an output was written"
 
 # smooth (issue 12): a 2x2x2 grid of the unit cube, untagged, its centre vertex pushed towards a corner
 # (inverted hexahedra), smoothed against cube.off (sharp edges found by dihedral angle): untangled, the

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -88,6 +89,66 @@ void call(const std::string& source, const std::string& doing, const F& f)
   } catch(...) {
     throw Input_error(source, 0, "gmsh could not " + doing + ": " + last_error("unknown error"));
   }
+}
+
+// Where a solid touches itself: over the pairs of CAD faces that share no curve, the mesh node of
+// one closest (on the CAD geometry) to the other; "" if no pair is closer than `tolerance`. Called
+// after the 3D mesher failed with its PLC error ("a segment and a facet intersect"), which names no
+// point: a face tangent to another (a sphere touching a face) is the usual cause.
+inline std::string touching_faces(double tolerance)
+{
+  std::vector<std::pair<int, int> > faces;
+  gmsh::model::getEntities(faces, 2);
+  if(faces.size() > 400) return std::string(); // the error path stays quick
+  std::vector<std::set<int> > curves(faces.size());
+  for(std::size_t i = 0; i < faces.size(); ++i) {
+    std::vector<int> up, down;
+    gmsh::model::getAdjacencies(2, faces[i].second, up, down);
+    curves[i].insert(down.begin(), down.end());
+  }
+  double best = tolerance;
+  std::string found;
+  for(std::size_t i = 0; i < faces.size(); ++i) {
+    std::vector<std::size_t> tags;
+    std::vector<double> coords, parametric;
+    try { gmsh::model::mesh::getNodes(tags, coords, parametric, 2, faces[i].second, true, false); } catch(...) { continue; }
+    const std::size_t stride = (std::max)(std::size_t(1), tags.size() / 2000);
+    for(std::size_t j = 0; j < faces.size(); ++j) {
+      if(j == i) continue;
+      bool adjacent = false;
+      for(int c : curves[j]) adjacent = adjacent || curves[i].count(c) > 0;
+      if(adjacent) continue;
+      for(std::size_t n = 0; n < tags.size(); n += stride) {
+        std::vector<double> point(coords.begin() + 3 * n, coords.begin() + 3 * n + 3), closest, uv;
+        try { gmsh::model::getClosestPoint(2, faces[j].second, point, closest, uv); } catch(...) { break; }
+        const double d = std::sqrt((closest[0] - point[0]) * (closest[0] - point[0]) + (closest[1] - point[1]) * (closest[1] - point[1]) +
+                                   (closest[2] - point[2]) * (closest[2] - point[2]));
+        if(d < best) {
+          best = d;
+          std::ostringstream os;
+          os << "near (" << point[0] << ", " << point[1] << ", " << point[2] << "), CAD faces " << faces[i].second << " and "
+             << faces[j].second << " meet (distance " << d << ") without sharing an edge";
+          found = os.str();
+        }
+      }
+    }
+  }
+  return found;
+}
+
+// A failure of the 3D mesher in our words: the PLC error of gmsh's boundary recovery means that two
+// faces of the boundary touch or cross.
+inline std::string mesher_failure(const std::string& source, double diagonal, double h)
+{
+  const std::string raw = last_error("unknown error");
+  if(raw.find("PLC Error") == std::string::npos && raw.find("intersect") == std::string::npos)
+    return "gmsh could not tetrahedralize the part (mesh size " + std::to_string(h) + "): " + raw;
+  (void)source;
+  std::string where;
+  try { where = touching_faces(1e-3 * diagonal); } catch(...) {}
+  return "the solid touches itself" + (where.empty() ? std::string(" (two of its faces touch or cross)") : ": " + where) +
+         ", where a solid has zero thickness; no tetrahedral mesh can fill it: leave a gap between those faces "
+         "or fuse them along an edge in the CAD tool, and retry (gmsh: " + raw + ")";
 }
 
 inline void check_readable(const std::string& filename)
@@ -326,8 +387,11 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
     const double h = size > 0 ? size : diagonal / 20;
     gmsh::option::setNumber("Mesh.MeshSizeMax", h);
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    internal_gmsh::call(filename, "tetrahedralize the part (mesh size " + std::to_string(h) + ")",
-                        [&] { gmsh::model::mesh::generate(3); });
+    try {
+      gmsh::model::mesh::generate(3);
+    } catch(...) {
+      throw Input_error(filename, 0, internal_gmsh::mesher_failure(filename, diagonal, h));
+    }
     Tetrahedral_soup_3<Point> result;
     internal_gmsh::extract(filename, result);
     if(result.tetrahedra.empty())

@@ -200,7 +200,19 @@ def gmsh_files():
     gmsh.write(path("box_with_cavity_v41.msh"))
     gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
     gmsh.write(path("box_with_cavity_v22.msh"))
+    sphere_tangent_to_a_face(gmsh)
     gmsh.finalize()
+
+
+def sphere_tangent_to_a_face(gmsh):
+    # a unit cube minus a sphere of radius 0.3 tangent to its top face at (0.5, 0.5, 1): a solid that
+    # touches itself at one point, which gmsh's 3D mesher refuses with a PLC error naming no point
+    gmsh.model.add("sphere_tangent")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1, 1)
+    gmsh.model.occ.addSphere(0.5, 0.5, 0.7, 0.3, 2)
+    gmsh.model.occ.cut([(3, 1)], [(3, 2)])
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("sphere_tangent.step"))
 
 
 surfaces()
