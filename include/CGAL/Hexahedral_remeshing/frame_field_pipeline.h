@@ -255,7 +255,7 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
                    parameters::tetrahedron_order(order, parameters::face_weights(
                      choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE))));
     } else {
-      r.repair = repair_singularity_graph(mesh, r.frames, r.matchings, np);
+      r.repair = repair_singularity_graph(mesh, r.frames, r.matchings, r.directions, np);
     }
     r.repaired = true;
     // an unchanged field keeps its graph bitwise

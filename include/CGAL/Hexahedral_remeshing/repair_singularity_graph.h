@@ -119,8 +119,10 @@ inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_me
 /// (`"slide_jog"`). A change is kept only if it lowers a cost in which defects dominate
 /// (improper edges, then jogs by their angle, then defective vertices) and the length of the
 /// singular curves breaks ties; so the repair never adds defects, and it stops at a local minimum.
-/// Faces with a boundary edge are never changed: the transport around every boundary edge, hence
-/// every achieved boundary valence (the paper's guarantee), stays as it was.
+/// Every achieved boundary valence (the paper's guarantee) stays as it was: with the `directions`
+/// the frames follow, a face with a boundary edge may change only if the valence of Eq. 3 of each of
+/// its boundary edges stays the same (a singular curve's end slides along the boundary); without
+/// them, such faces are never changed.
 ///
 /// The frames are not changed: re-optimize them with the repaired matchings fixed
 /// (`realign_frame_field()`, which `compute_frame_field_pipeline()` runs after the repair).
@@ -128,6 +130,8 @@ inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_me
 /// \param mesh the tetrahedral mesh
 /// \param frames one frame per tetrahedron (they give the world axes of the holonomies)
 /// \param matchings the kept matchings, repaired in place
+/// \param directions empty, or one direction per boundary triangle: those the boundary frames follow
+///        (the constraints `v` before the realignment, the normals after it)
 /// \param np optional named parameters: `maximum_repair_steps`
 /// \returns the defects by reason before and after, the changes by operation, the seconds
 /// \throws Error if `frames` or `matchings` are not sized for `mesh`.
@@ -135,6 +139,7 @@ template <class Traits, class NamedParameters = CGAL::parameters::Default_named_
 Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Traits>& mesh,
                                                    const std::vector<Eigen::Matrix3d>& frames,
                                                    Matchings& matchings,
+                                                   const std::vector<Eigen::Vector3d>& directions = std::vector<Eigen::Vector3d>(),
                                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
@@ -146,9 +151,11 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
   const std::size_t defects = internal::graph_defect_count(r.defects_before);
   const std::size_t max_steps = choose_parameter(get_parameter(np, internal_np::maximum_repair_steps), 20 * (defects + 100));
   const std::vector<int> input = matchings.face_matching;
+  if(!directions.empty() && directions.size() != mesh.number_of_boundary_triangles())
+    throw Error("repair_singularity_graph: one direction per boundary triangle expected");
   if(defects > 0) {
     const auto operations = internal::singularity_repair_operations<Mesh>();
-    internal::Singularity_repair_state<Mesh> state(mesh, frames, matchings.face_matching);
+    internal::Singularity_repair_state<Mesh> state(mesh, frames, matchings.face_matching, directions.empty() ? nullptr : &directions);
     std::vector<std::size_t> applied;
     internal::greedy_surgery(state, operations, max_steps, applied);
     for(std::size_t k = 0; k < operations.size(); ++k) r.operations.emplace_back(operations[k]->name(), applied[k]);

@@ -238,6 +238,45 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
   return g;
 }
 
+namespace internal {
+
+// The valence boundary edge e gets from the frames and the matchings `face_matching` (Eq. 3 of the
+// paper, see compute_achieved_boundary_valences()); `k_real`, if given, receives the real value of Eq. 3.
+template <class Traits>
+int achieved_boundary_valence(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                              const std::vector<int>& face_matching, const std::vector<Eigen::Vector3d>& directions,
+                              typename Tetrahedral_mesh_3<Traits>::Index e, double* k_real = nullptr)
+{
+  const Octahedral_group& group = octahedral_group();
+  auto to_eigen = [](const typename Traits::Vector_3& v) {
+    return Eigen::Vector3d(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+  };
+  const auto ring = mesh.edge_ring(e);
+  const auto faces = mesh.edge_ring_faces(e);
+  const auto& bt = mesh.edge_boundary_triangles(e);
+  // H = g_{t(m-1) tm} ... g_{t1 t2}, so that E_t1 ~ E_tm H
+  int H = Octahedral_group::identity_index;
+  for(std::size_t k = 0; k + 1 < ring.size(); ++k) {
+    const int g = face_matching[faces[k + 1]];
+    H = group.multiply(mesh.face_tetrahedra(faces[k + 1])[0] == ring[k] ? g : group.inverse(g), H);
+  }
+  const Eigen::Matrix3d R = frames[ring.front()] * group.matrix(H).transpose() * frames[ring.back()].transpose();
+  const auto& ev = mesh.edge_vertices(e);
+  const Eigen::Vector3d half_edge = to_eigen(mesh.point(ev[0]) - mesh.point(ev[1])).normalized(); // e_ij of triangle i
+  const Eigen::Vector3d di = directions[bt[0]].normalized(), dj = directions[bt[1]].normalized();
+  const Eigen::Vector3d Rdj = R * dj;
+  const double real = 2.0 - (2.0 / CGAL_PI) * std::atan2(di.cross(Rdj).dot(half_edge), di.dot(Rdj));
+  if(k_real != nullptr) *k_real = real;
+  const int k_mod = ((int(std::round(real)) % 4) + 4) % 4;
+  const double phi = CGAL_PI - std::atan2(di.cross(dj).dot(half_edge), di.dot(dj)); // [0, 2 pi]
+  const double target = 2.0 * phi / CGAL_PI;
+  int k = k_mod;
+  while(std::abs(k + 4 - target) < std::abs(k - target)) k += 4;
+  return k;
+}
+
+} // namespace internal
+
 /// \ingroup PkgHexahedralRemeshingRef
 /// Valences of the boundary edges produced by a frame field (Eq. 3 of the paper).
 struct Boundary_valences
@@ -280,34 +319,14 @@ Boundary_valences compute_achieved_boundary_valences(const Tetrahedral_mesh_3<Tr
                                                      const std::vector<int>& prescribed = std::vector<int>())
 {
   typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
-  const internal::Octahedral_group& group = internal::octahedral_group();
   if(directions.size() != mesh.number_of_boundary_triangles())
     throw Error("compute_achieved_boundary_valences: one direction per boundary triangle expected");
   Boundary_valences r;
   r.achieved.assign(mesh.number_of_edges(), -1);
-  auto to_eigen = [](const typename Traits::Vector_3& v) {
-    return Eigen::Vector3d(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
-  };
   for(Index e : mesh.boundary_edges()) {
-    const auto ring = mesh.edge_ring(e);
-    const auto faces = mesh.edge_ring_faces(e);
-    const auto& bt = mesh.edge_boundary_triangles(e);
-    // H = g_{t(m-1) tm} ... g_{t1 t2}, so that E_t1 ~ E_tm H
-    int H = internal::Octahedral_group::identity_index;
-    for(std::size_t k = 0; k + 1 < ring.size(); ++k) H = group.multiply(matchings.step(mesh, faces[k + 1], ring[k]), H);
-    const Eigen::Matrix3d R = frames[ring.front()] * group.matrix(H).transpose() * frames[ring.back()].transpose();
-    const auto& ev = mesh.edge_vertices(e);
-    const Eigen::Vector3d half_edge = to_eigen(mesh.point(ev[0]) - mesh.point(ev[1])).normalized(); // e_ij of triangle i
-    const Eigen::Vector3d di = directions[bt[0]].normalized(), dj = directions[bt[1]].normalized();
-    const Eigen::Vector3d Rdj = R * dj;
-    const double k_real = 2.0 - (2.0 / CGAL_PI) * std::atan2(di.cross(Rdj).dot(half_edge), di.dot(Rdj));
-    const double rounded = std::round(k_real);
-    r.max_deviation = (std::max)(r.max_deviation, std::abs(k_real - rounded));
-    const int k_mod = ((int(rounded) % 4) + 4) % 4;
-    const double phi = CGAL_PI - std::atan2(di.cross(dj).dot(half_edge), di.dot(dj)); // [0, 2 pi]
-    const double target = 2.0 * phi / CGAL_PI;
-    int k = k_mod;
-    while(std::abs(k + 4 - target) < std::abs(k - target)) k += 4;
+    double k_real = 0;
+    const int k = internal::achieved_boundary_valence(mesh, frames, matchings.face_matching, directions, e, &k_real);
+    r.max_deviation = (std::max)(r.max_deviation, std::abs(k_real - std::round(k_real)));
     r.achieved[e] = k;
     ++r.total;
     ++r.histogram[std::size_t((std::min)(k, 4))];

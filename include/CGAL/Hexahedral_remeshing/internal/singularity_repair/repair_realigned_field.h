@@ -8,7 +8,7 @@
 // the frames re-optimized with the repaired matchings fixed (the realignment's solver, directions = the
 // normals the frames already follow). The result is kept only if it is no worse, both with the kept
 // matchings and from the frames alone (their closest matchings, what any reader of the frames sees),
-// and better in one of them.
+// in all graph defects and in those of the curves themselves, and better in one of them.
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_REALIGNED_FIELD_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_REALIGNED_FIELD_H
 
@@ -26,11 +26,25 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// Graph defects of the frames with their own closest matchings.
-template <class Traits>
-std::size_t frame_graph_defects(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames)
+// The defects of a check that the repair compares: all graph defects, and those of the edges and of
+// the curves' ends and turns (improper edges, jogs, dangling ends, zippers); neither may grow.
+struct Compared_defects
 {
-  return check_local_meshability(mesh, frames, compute_matchings(mesh, frames)).graph_defects();
+  std::size_t graph = 0, curves = 0;
+  explicit Compared_defects(const Local_meshability_report& c)
+    : graph(c.graph_defects()),
+      curves(c.count(Meshability_reason::IMPROPER_EDGE) + c.count(Meshability_reason::JOG) +
+             c.count(Meshability_reason::DANGLING_END) + c.count(Meshability_reason::ZIPPER))
+  {}
+  bool no_worse_than(const Compared_defects& o) const { return graph <= o.graph && curves <= o.curves; }
+  bool better_than(const Compared_defects& o) const { return no_worse_than(o) && (graph < o.graph || curves < o.curves); }
+};
+
+// The check of the frames with their own closest matchings.
+template <class Traits>
+Local_meshability_report frame_check(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames)
+{
+  return check_local_meshability(mesh, frames, compute_matchings(mesh, frames));
 }
 
 // `realignment_np`: the named parameters of the realignment (solver order, face weights).
@@ -41,23 +55,25 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
 {
   const auto start = std::chrono::steady_clock::now();
   Matchings repaired = matchings;
-  Singularity_repair_result r = repair_singularity_graph(mesh, frames, repaired, np);
-  r.graph_defects_before = graph_defect_count(r.defects_before);
-  r.frame_graph_defects_before = frame_graph_defects(mesh, frames);
-  r.graph_defects_after = r.graph_defects_before;
-  r.frame_graph_defects_after = r.frame_graph_defects_before;
+  const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
+  Singularity_repair_result r = repair_singularity_graph(mesh, frames, repaired, normals, np);
+  const Compared_defects kept_before(check_local_meshability(mesh, frames, matchings));
+  const Compared_defects alone_before(frame_check(mesh, frames));
+  r.graph_defects_before = r.graph_defects_after = kept_before.graph;
+  r.frame_graph_defects_before = r.frame_graph_defects_after = alone_before.graph;
+  r.accepted = false;
   if(r.changed_faces > 0) {
     std::vector<Eigen::Matrix3d> reoptimized = frames;
-    realign_frame_field(mesh, reoptimized, repaired, boundary_triangle_unit_normals(mesh), realignment_np);
-    const std::size_t kept = check_local_meshability(mesh, reoptimized, repaired).graph_defects();
-    const std::size_t alone = frame_graph_defects(mesh, reoptimized);
-    r.accepted = kept <= r.graph_defects_before && alone <= r.frame_graph_defects_before &&
-                 (kept < r.graph_defects_before || alone < r.frame_graph_defects_before);
+    realign_frame_field(mesh, reoptimized, repaired, normals, realignment_np);
+    const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired));
+    const Compared_defects alone(frame_check(mesh, reoptimized));
+    r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
+                 (kept.better_than(kept_before) || alone.better_than(alone_before));
     if(r.accepted) {
       frames.swap(reoptimized);
       matchings = std::move(repaired);
-      r.graph_defects_after = kept;
-      r.frame_graph_defects_after = alone;
+      r.graph_defects_after = kept.graph;
+      r.frame_graph_defects_after = alone.graph;
     }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

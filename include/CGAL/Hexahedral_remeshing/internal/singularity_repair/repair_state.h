@@ -10,12 +10,14 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_STATE_H
 
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/edge_holonomy.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 
 #include <Eigen/Dense>
 
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -39,8 +41,12 @@ class Singularity_repair_state
 public:
   typedef typename Mesh::Index Index;
 
-  Singularity_repair_state(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, std::vector<int>& face_matching)
-    : m_mesh(mesh), m_frames(frames), m_matching(face_matching)
+  // `directions` (per boundary triangle, the directions the frames follow; may be null): with them,
+  // faces with a boundary edge may change too, as long as the valence every boundary edge gets
+  // (Eq. 3) stays the same; without them, such faces are never changed.
+  Singularity_repair_state(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, std::vector<int>& face_matching,
+                           const std::vector<Eigen::Vector3d>* directions = nullptr)
+    : m_mesh(mesh), m_frames(frames), m_matching(face_matching), m_directions(directions)
   {
     const std::size_t ne = mesh.number_of_edges();
     m_holonomy.assign(ne, -1);
@@ -68,11 +74,12 @@ public:
     return {{m_mesh.find_edge(fv[0], fv[1]), m_mesh.find_edge(fv[1], fv[2]), m_mesh.find_edge(fv[2], fv[0])}};
   }
 
-  // Only interior faces none of whose edges is on the boundary: the transports around boundary edges,
-  // hence the boundary valences the paper guarantees, stay as they are.
+  // Interior faces; those with a boundary edge only if the directions are known, so that every change
+  // can be checked to keep the boundary valences the paper guarantees.
   bool is_editable(Index f) const
   {
     if(m_mesh.is_boundary_face(f)) return false;
+    if(m_directions != nullptr) return true;
     for(Index e : face_edges(f)) if(m_mesh.is_boundary_edge(e)) return false;
     return true;
   }
@@ -100,7 +107,7 @@ public:
 
   double vertex_cost(Index v) const { return vertex_cost(vertex_singularity(m_mesh, m_class, v)); }
 
-  // The change of the cost if face f had matching g.
+  // The change of the cost if face f had matching g (infinite if a boundary edge's valence changes).
   double evaluate(Index f, int g)
   {
     const std::array<Index, 3> edges = face_edges(f);
@@ -109,10 +116,21 @@ public:
     for(Index v : fv) before += vertex_cost(v);
     std::array<int, 3> G;
     std::array<signed char, 3> c;
-    for(int i = 0; i < 3; ++i) before += edge_cost(edges[i], m_class[edges[i]], m_holonomy[edges[i]]);
+    std::array<int, 3> valence{{-1, -1, -1}};
+    for(int i = 0; i < 3; ++i) {
+      before += edge_cost(edges[i], m_class[edges[i]], m_holonomy[edges[i]]);
+      if(m_mesh.is_boundary_edge(edges[i])) valence[i] = boundary_valence(edges[i]);
+    }
     const int old = m_matching[f];
     m_matching[f] = g;
+    bool keeps_valences = true;
     for(int i = 0; i < 3; ++i) {
+      if(m_mesh.is_boundary_edge(edges[i])) {
+        keeps_valences = keeps_valences && boundary_valence(edges[i]) == valence[i];
+        G[i] = -1;
+        c[i] = -1;
+        continue;
+      }
       G[i] = edge_holonomy(m_mesh, m_matching, edges[i]);
       c[i] = classify(edges[i], G[i]);
       after += edge_cost(edges[i], c[i], G[i]);
@@ -122,7 +140,7 @@ public:
     for(Index v : fv) after += vertex_cost(v);
     for(int i = 0; i < 3; ++i) m_class[edges[i]] = saved[i];
     m_matching[f] = old;
-    return after - before;
+    return keeps_valences ? after - before : std::numeric_limits<double>::infinity();
   }
 
   // The change of the cost of a change of one or two faces.
@@ -147,6 +165,7 @@ public:
   {
     m_matching[f] = g;
     for(Index e : face_edges(f)) {
+      if(m_mesh.is_boundary_edge(e)) continue;
       m_holonomy[e] = edge_holonomy(m_mesh, m_matching, e);
       m_class[e] = classify(e, m_holonomy[e]);
     }
@@ -156,10 +175,12 @@ public:
 
 private:
   signed char classify(Index e, int G) const { return classify_edge(m_mesh, m_frames, e, G); }
+  int boundary_valence(Index e) const { return achieved_boundary_valence(m_mesh, m_frames, m_matching, *m_directions, e); }
 
   const Mesh& m_mesh;
   const std::vector<Eigen::Matrix3d>& m_frames;
   std::vector<int>& m_matching;
+  const std::vector<Eigen::Vector3d>* m_directions;
   std::vector<int> m_holonomy;
   std::vector<signed char> m_class;
   double m_mean_length = 1;
