@@ -3,7 +3,7 @@
 # ../shared/data (or the files given), with the outcome, the stage a failed run failed at, the defects of the
 # field's local meshability check before and after the repair, hex count, scaled Jacobian, Hausdorff distance,
 # feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory.
-#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE...]
+#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE or FOLDER...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
@@ -13,7 +13,7 @@ modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -e
 printf '%-28s %-10s %8s %7s %-17s %-12s %9s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects minSJ meanSJ \
   hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB
 for f in "${files[@]}"; do
-  name=$(basename "$f" .vtk)
+  name=$(basename "$f"); name="${name%.*}"
   for mode in "${modes[@]}"; do
     flag=(); [ "$mode" = baseline ] && flag=(--baseline); [ "$mode" = no_repair ] && flag=(--no-repair)
     json="$out/$name.$mode.json"; rm -f "$json"
