@@ -113,6 +113,41 @@ struct Singularity_graph
   }
 };
 
+namespace internal {
+
+// An edge between 45 and 75.5 degrees off its axis (`soft_jogs`) takes the valence of an edge of the
+// same curve (sharing a vertex, parallel axis) that runs within 45 degrees of its axis, so that the
+// curve is not cut into valence-3 and valence-5 pieces (and false zippers) where it steps backwards;
+// only the 3/5 label can change, not whether the edge is singular.
+template <class Mesh, class Axis>
+void settle_soft_jogs(const Mesh& mesh, const std::vector<typename Mesh::Index>& soft_jogs, const Axis& world_axis,
+                      std::vector<signed char>& edge_valence)
+{
+  typedef typename Mesh::Index Index;
+  std::vector<char> settled(edge_valence.size(), 0);
+  for(std::size_t e = 0; e < edge_valence.size(); ++e) settled[e] = edge_valence[e] == 3 || edge_valence[e] == 5;
+  for(Index e : soft_jogs) settled[e] = 0;
+  for(bool changed = true; changed;) {
+    changed = false;
+    for(Index e : soft_jogs) {
+      if(settled[e]) continue;
+      const Eigen::Vector3d A = world_axis(e);
+      for(Index v : mesh.edge_vertices(e)) {
+        for(Index n : mesh.vertex_edges(v)) {
+          if(n == e || !settled[n] || std::abs(world_axis(n).dot(A)) < std::sqrt(0.5)) continue;
+          edge_valence[e] = edge_valence[n];
+          settled[e] = 1;
+          changed = true;
+          break;
+        }
+        if(settled[e]) break;
+      }
+    }
+  }
+}
+
+} // namespace internal
+
 /// \ingroup PkgHexahedralRemeshingRef
 /// Computes the singularity graph of `frames` with matchings `matchings`.
 template <class Traits>
@@ -158,32 +193,7 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
     }
     g.edge_valence[e] = valence;
   }
-  // An edge between 45 and 75.5 degrees off its axis takes the valence of an edge of the same curve
-  // (sharing a vertex, parallel axis) that runs within 45 degrees of its axis, so that the curve is
-  // not cut into valence-3 and valence-5 pieces (and false zippers) where it steps backwards; only
-  // the 3/5 label can change, not whether the edge is singular.
-  {
-    std::vector<char> settled(ne, 0);
-    for(Index e = 0; e < ne; ++e) settled[e] = g.edge_valence[e] == 3 || g.edge_valence[e] == 5;
-    for(Index e : soft_jogs) settled[e] = 0;
-    for(bool changed = true; changed;) {
-      changed = false;
-      for(Index e : soft_jogs) {
-        if(settled[e]) continue;
-        const Eigen::Vector3d A = world_axis(e);
-        for(Index v : mesh.edge_vertices(e)) {
-          for(Index n : mesh.vertex_edges(v)) {
-            if(n == e || !settled[n] || std::abs(world_axis(n).dot(A)) < std::sqrt(0.5)) continue;
-            g.edge_valence[e] = g.edge_valence[n];
-            settled[e] = 1;
-            changed = true;
-            break;
-          }
-          if(settled[e]) break;
-        }
-      }
-    }
-  }
+  internal::settle_soft_jogs(mesh, soft_jogs, world_axis, g.edge_valence);
   // A jog inherits the valence of a classified singular edge that shares one of its vertices and
   // whose holonomy axis is parallel to its own (the same curve); jogs with no such neighbour stay
   // improper.
