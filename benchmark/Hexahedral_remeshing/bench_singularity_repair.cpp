@@ -39,7 +39,7 @@ void run(const std::string& name, const Mesh& mesh, int runs)
   std::vector<double> field_seconds, repair_seconds;
   HR::Frame_field_pipeline_result r;
   for(int k = 0; k < runs; ++k) {
-    r = HR::compute_frame_field_pipeline(mesh);
+    r = HR::compute_frame_field_pipeline(mesh, HR::parameters::singularity_repair(true));
     field_seconds.push_back(r.frame_field.seconds);
     repair_seconds.push_back(r.repair.seconds);
   }

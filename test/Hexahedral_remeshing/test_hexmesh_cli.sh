@@ -142,13 +142,14 @@ py_check report "$tmp/f.json"
 py_check frames "$tmp/f.vtk" "$tmp/f.json"
 py_check singularities "$tmp/s.vtk" "$tmp/f.json"
 py_check cubecover "$tmp/cc" "$tmp/f.json"
-# the local meshability check by reason, before and after the repair, in the summary and the JSON; --no-repair
+# the local meshability check by reason, before and after the repair, in the summary and the JSON; --repair
 grep -q "meshability         before the repair: " "$tmp/out" && grep -q "meshability         final field: " "$tmp/out" \
   || fail "frames summary lacks the meshability check: $(cat "$tmp/out")"
 grep -q '"meshability": {"before_repair": {"improper_edge": ' "$tmp/f.json" || fail "frames JSON lacks meshability"
-"$hexmesh" frames "$n13c" --no-repair --json "$tmp/f_norepair.json" > "$tmp/out" 2> "$tmp/err" || fail "frames --no-repair exit code $?"
-grep -q "repair              not run (--no-repair)" "$tmp/out" || fail "frames --no-repair: $(cat "$tmp/out")"
-grep -q '"repair": {"performed": false' "$tmp/f_norepair.json" || fail "frames --no-repair JSON: repair performed"
+grep -q '"repair": {"performed": false' "$tmp/f.json" || fail "frames JSON: the repair ran without --repair"
+"$hexmesh" frames "$n13c" --repair --json "$tmp/f_repair.json" > "$tmp/out" 2> "$tmp/err" || fail "frames --repair exit code $?"
+grep -q "repair              .* face matchings changed" "$tmp/out" || fail "frames --repair: $(cat "$tmp/out")"
+grep -q '"repair": {"performed": true' "$tmp/f_repair.json" || fail "frames --repair JSON: repair not performed"
 "$hexmesh" info "$tmp/cc.mesh" > /dev/null 2>&1 || fail "the CubeCover .mesh does not read back"
 # the written valences read back (vertex indices of f.vtk): same prescription with the geometric heuristic
 "$hexmesh" frames "$n13c" --heuristic geometric --valences "$tmp/f_valences.txt" --no-realign --quiet \

@@ -212,7 +212,7 @@ TEST(Meshability, SharedModelsNeverWorse)
     Mesh m;
     HR::IO::read_tetrahedral_mesh(f, m, HR::parameters::split_boundary_chords(true));
     const auto plain = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(false));
-    const auto r = HR::compute_frame_field_pipeline(m);
+    const auto r = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(true));
     const auto kept_plain = evaluate_matchings(m, plain.frames, plain.matchings);
     const auto kept = evaluate_matchings(m, r.frames, r.matchings);
     const auto alone_plain = independent::evaluate_frames(points_of(m), tets_of(m), plain.frames);
@@ -253,7 +253,7 @@ TEST(Meshability, CrossedCylindersFewerJogsNoZipperAdded)
   const auto plain = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(false));
   const auto before = evaluate_matchings(m, step3.frames, step3.matchings);
   const auto alone_plain = independent::evaluate_frames(points_of(m), tets_of(m), plain.frames);
-  const auto r = HR::compute_frame_field_pipeline(m);
+  const auto r = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(true));
   const auto kept = evaluate_matchings(m, r.frames, r.matchings);
   const auto alone = independent::evaluate_frames(points_of(m), tets_of(m), r.frames);
   std::printf("n01c: zippers %zu -> %zu (frames alone %zu -> %zu), jogs %zu -> %zu (frames alone %zu -> %zu)\n", before.zippers,

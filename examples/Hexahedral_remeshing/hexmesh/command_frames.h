@@ -46,7 +46,7 @@ inline std::vector<std::string> frames_options()
   return options;
 }
 
-inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "no-repair", "no-chord-split", "no-acute-grading", "quiet"}; }
+inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "repair", "no-chord-split", "no-acute-grading", "quiet"}; }
 
 // Pipeline visitor: per-stage progress on stderr (stages over a second), smoothing notes.
 struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipeline_visitor
@@ -67,7 +67,7 @@ struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipelin
 struct Frame_field_options
 {
   CGAL::Hexahedral_remeshing::Valence_heuristic heuristic;
-  bool baseline = false, realign = true, repair = true, quiet = false;
+  bool baseline = false, realign = true, repair = false, quiet = false;
   // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
   double acute_edge_band = -1;
 };
@@ -78,7 +78,7 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   o.heuristic = heuristic_option(args);
   o.baseline = args.has("baseline");
   o.realign = !args.has("no-realign");
-  o.repair = !args.has("no-repair");
+  o.repair = args.has("repair");
   o.quiet = args.has("quiet");
   if(args.has("acute-edge-band")) {
     o.acute_edge_band = args.number("acute-edge-band", 0.);
@@ -171,7 +171,7 @@ inline void print_meshability(std::ostream& out, const CGAL::Hexahedral_remeshin
     out << "  repair              " << r.repair.changed_faces << " face matchings changed (" << (ops.tellp() > 0 ? ops.str() : std::string("no operation"))
         << "), " << std::fixed << std::setprecision(3) << r.repair.seconds << " s\n" << std::defaultfloat;
   } else {
-    out << "  repair              not run (--no-repair)\n";
+    out << "  repair              not run (--repair runs it)\n";
   }
   out << "  meshability         final field: " << meshability_counts(r.meshability.counts) << "\n";
 }

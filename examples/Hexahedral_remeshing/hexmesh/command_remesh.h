@@ -33,7 +33,7 @@ inline std::vector<std::string> remesh_options()
   return options;
 }
 
-inline std::vector<std::string> remesh_flags() { return {"baseline", "no-repair", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 inline int command_remesh(const Arguments& args)
 {

@@ -148,7 +148,8 @@ struct Frame_field_pipeline_result
 ///       better in one (`Singularity_repair_result::accepted`); without realignment, the matchings of the
 ///       field of step 3 are repaired in place}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true`}
+///     \cgalParamDefault{`false` (opt-in: on several shared models the greedy rounding of the map folds more
+///       tetrahedra on the repaired field, see the manual)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{acute_edge_band_radius}
 ///     \cgalParamDescription{radius, in model units, of a band around the boundary edges of prescribed
@@ -248,7 +249,7 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
     r.realigned = true;
     visitor.end_stage("realignment", r.realignment.seconds);
   }
-  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), true)) {
+  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), false)) {
     visitor.start_stage("repair");
     if(r.realigned) {
       r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, np,

@@ -34,7 +34,7 @@ enum maximum_repair_steps_t { maximum_repair_steps };
 
 namespace parameters {
 #ifdef DOXYGEN_RUNNING
-/// Pipeline: repair the singularity graph of the field before the realignment (`bool`, default `true`).
+/// Pipeline: repair the singularity graph of the realigned field (`bool`, default `false`).
 template <class T> unspecified_type singularity_repair(const T& value);
 /// Repair: maximum number of defects visited by the matching surgery (`std::size_t`, default
 /// `20 * (defects + 100)`).

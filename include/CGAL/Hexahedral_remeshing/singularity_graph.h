@@ -88,8 +88,7 @@ struct Singularity_graph
   /// Per edge: 4 for a regular interior edge, 3 or 5 for a singular one, 0 for an improper one
   /// (any other holonomy: half turn, third turn, or a quarter turn about an axis more than 75.5
   /// degrees away from the edge that is not the jog of a neighbouring singular curve with the same
-  /// axis), -1 for a boundary edge. An edge 45 to 75.5 degrees off its axis takes the valence of a
-  /// neighbouring edge of the same axis within 45 degrees of it, if any (else the sign of the cosine).
+  /// axis), -1 for a boundary edge.
   std::vector<signed char> edge_valence;
   /// Per edge: the holonomy (group element) around an interior edge, -1 on the boundary.
   std::vector<int> edge_holonomy;
@@ -113,41 +112,6 @@ struct Singularity_graph
   }
 };
 
-namespace internal {
-
-// An edge between 45 and 75.5 degrees off its axis (`soft_jogs`) takes the valence of an edge of the
-// same curve (sharing a vertex, parallel axis) that runs within 45 degrees of its axis, so that the
-// curve is not cut into valence-3 and valence-5 pieces (and false zippers) where it steps backwards;
-// only the 3/5 label can change, not whether the edge is singular.
-template <class Mesh, class Axis>
-void settle_soft_jogs(const Mesh& mesh, const std::vector<typename Mesh::Index>& soft_jogs, const Axis& world_axis,
-                      std::vector<signed char>& edge_valence)
-{
-  typedef typename Mesh::Index Index;
-  std::vector<char> settled(edge_valence.size(), 0);
-  for(std::size_t e = 0; e < edge_valence.size(); ++e) settled[e] = edge_valence[e] == 3 || edge_valence[e] == 5;
-  for(Index e : soft_jogs) settled[e] = 0;
-  for(bool changed = true; changed;) {
-    changed = false;
-    for(Index e : soft_jogs) {
-      if(settled[e]) continue;
-      const Eigen::Vector3d A = world_axis(e);
-      for(Index v : mesh.edge_vertices(e)) {
-        for(Index n : mesh.vertex_edges(v)) {
-          if(n == e || !settled[n] || std::abs(world_axis(n).dot(A)) < std::sqrt(0.5)) continue;
-          edge_valence[e] = edge_valence[n];
-          settled[e] = 1;
-          changed = true;
-          break;
-        }
-        if(settled[e]) break;
-      }
-    }
-  }
-}
-
-} // namespace internal
-
 /// \ingroup PkgHexahedralRemeshingRef
 /// Computes the singularity graph of `frames` with matchings `matchings`.
 template <class Traits>
@@ -167,7 +131,7 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
     return Eigen::Vector3d(CGAL::to_double(dv.x()), CGAL::to_double(dv.y()), CGAL::to_double(dv.z())).normalized();
   };
   auto world_axis = [&](Index e) -> Eigen::Vector3d { return frames[mesh.edge_ring(e)[0]] * group.axis(g.edge_holonomy[e]); };
-  std::vector<Index> jogs, soft_jogs;
+  std::vector<Index> jogs;
   for(Index e = 0; e < ne; ++e) {
     if(mesh.is_boundary_edge(e)) continue;
     const auto ring = mesh.edge_ring(e);
@@ -188,12 +152,9 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
       // valence is decided below from its neighbours.
       if(std::abs(c) > 0.25) valence = c > 0 ? 3 : 5;
       else jogs.push_back(e);
-      // 45 to 75.5 degrees off: its sign says little (a step of the zigzag may run backwards)
-      if(valence != 0 && std::abs(c) < std::sqrt(0.5)) soft_jogs.push_back(e);
     }
     g.edge_valence[e] = valence;
   }
-  internal::settle_soft_jogs(mesh, soft_jogs, world_axis, g.edge_valence);
   // A jog inherits the valence of a classified singular edge that shares one of its vertices and
   // whose holonomy axis is parallel to its own (the same curve); jogs with no such neighbour stay
   // improper.
