@@ -90,7 +90,7 @@ struct Frame_field_pipeline_result
   /// the repaired matchings.
   Singularity_graph singularities;
   /// Local meshability check of the field of step 2 with its closest matchings, before the repair
-  /// (prescribed valences and the directions `v` for the feature sectors).
+  /// (feature sectors from `boundary_valences`; no disagreeing face, by construction).
   Local_meshability_report meshability_before;
   /// Report of the repair of the singularity graph (named parameter `singularity_repair`).
   Singularity_repair_result repair;
@@ -236,7 +236,8 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   r.matchings = compute_matchings(mesh, r.frames);
   r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
   r.boundary_valences = compute_achieved_boundary_valences(mesh, r.frames, r.matchings, r.directions, r.valences);
-  r.meshability_before = check_local_meshability(mesh, r.frames, r.matchings, r.valences, r.directions);
+  // the matchings are the frames' closest: no face disagrees; the boundary valences are those above
+  r.meshability_before = internal::local_meshability(mesh, r.frames, r.matchings, &r.boundary_valences.achieved, r.valences, false);
   r.matchings_seconds = seconds_since(t);
   visitor.end_stage("matchings", r.matchings_seconds);
 

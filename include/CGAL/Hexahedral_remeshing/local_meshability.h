@@ -75,6 +75,19 @@ struct Meshability_violation
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
 };
 
+namespace internal {
+
+// Violations of the singularity graph itself: every reason but the feature sectors and the disagreeing
+// faces, which the frames and the constraints decide.
+inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_meshability_reasons>& c)
+{
+  return c[std::size_t(Meshability_reason::IMPROPER_EDGE)] + c[std::size_t(Meshability_reason::JOG)] +
+         c[std::size_t(Meshability_reason::DANGLING_END)] + c[std::size_t(Meshability_reason::ZIPPER)] +
+         c[std::size_t(Meshability_reason::INVALID_NODE)] + c[std::size_t(Meshability_reason::BOUNDARY_CONTACT)];
+}
+
+} // namespace internal
+
 /// \ingroup PkgHexahedralRemeshingRef
 /// Result of `check_local_meshability()`.
 struct Local_meshability_report
@@ -98,11 +111,56 @@ struct Local_meshability_report
   }
   /// Number of violations of the singularity graph itself (every reason but the disagreeing faces and
   /// the feature sectors, which the frames and the constraints decide).
-  std::size_t graph_defects() const
-  {
-    return total() - count(Meshability_reason::DISAGREEING_FACE) - count(Meshability_reason::FEATURE_SECTOR);
-  }
+  std::size_t graph_defects() const { return internal::graph_defect_count(counts); }
 };
+
+namespace internal {
+
+// The check of check_local_meshability(), with the achieved boundary valences given (`achieved`,
+// per edge, or null: no feature check) and the faces' check optional (`faces`: false when the
+// matchings are the frames' closest ones, where no face can disagree).
+template <class Traits>
+Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                                           const Matchings& matchings, const std::vector<int>* achieved,
+                                           const std::vector<int>& prescribed, bool faces)
+{
+  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
+  Local_meshability_report r;
+  auto point = [&](Index v) { return to_eigen_point(mesh.point(v)); };
+  auto add = [&](Meshability_reason reason, Index index, const Eigen::Vector3d& p) {
+    r.violations.push_back({reason, std::uint32_t(index), p});
+    ++r.counts[std::size_t(reason)];
+  };
+  const std::size_t ne = mesh.number_of_edges();
+  r.edge_class.assign(ne, -1);
+  for(Index e = 0; e < ne; ++e) {
+    if(mesh.is_boundary_edge(e)) continue;
+    r.edge_class[e] = classify_edge(mesh, frames, e, edge_holonomy(mesh, matchings.face_matching, e));
+    const auto& ev = mesh.edge_vertices(e);
+    if(r.edge_class[e] == IMPROPER_CLASS) add(Meshability_reason::IMPROPER_EDGE, e, 0.5 * (point(ev[0]) + point(ev[1])));
+    else if(r.edge_class[e] == JOG_CLASS) add(Meshability_reason::JOG, e, 0.5 * (point(ev[0]) + point(ev[1])));
+  }
+  if(achieved != nullptr)
+    for(Index e : mesh.boundary_edges())
+      if(!achieves_valence((*achieved)[e], prescribed[e])) {
+        const auto& ev = mesh.edge_vertices(e);
+        add(Meshability_reason::FEATURE_SECTOR, e, 0.5 * (point(ev[0]) + point(ev[1])));
+      }
+  for(Index v = 0; v < mesh.number_of_vertices(); ++v) {
+    const Vertex_singularity s = vertex_singularity(mesh, r.edge_class, v);
+    if(s.kind != Vertex_singularity::NONE) add(Meshability_reason(int(s.kind)), v, point(v));
+  }
+  for(Index f = 0; faces && f < mesh.number_of_faces(); ++f) {
+    if(mesh.is_boundary_face(f)) continue;
+    const auto& ft = mesh.face_tetrahedra(f);
+    if(closest_matching(frames[ft[0]], frames[ft[1]]).index == matchings.face_matching[f]) continue;
+    const auto& fv = mesh.face_vertices(f);
+    add(Meshability_reason::DISAGREEING_FACE, f, (point(fv[0]) + point(fv[1]) + point(fv[2])) / 3.0);
+  }
+  return r;
+}
+
+} // namespace internal
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Checks that a frame field with its kept matchings is locally hex-meshable: every interior edge's
@@ -128,46 +186,11 @@ Local_meshability_report check_local_meshability(const Tetrahedral_mesh_3<Traits
                                                  const std::vector<int>& prescribed = std::vector<int>(),
                                                  const std::vector<Eigen::Vector3d>& directions = std::vector<Eigen::Vector3d>())
 {
-  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
   if(frames.size() != mesh.number_of_tetrahedra() || matchings.face_matching.size() != mesh.number_of_faces())
     throw Error("check_local_meshability: frames or matchings of another mesh");
-  Local_meshability_report r;
-  auto point = [&](Index v) { return internal::to_eigen_point(mesh.point(v)); };
-  auto add = [&](Meshability_reason reason, Index index, const Eigen::Vector3d& p) {
-    r.violations.push_back({reason, std::uint32_t(index), p});
-    ++r.counts[std::size_t(reason)];
-  };
-  const std::size_t ne = mesh.number_of_edges();
-  r.edge_class.assign(ne, -1);
-  for(Index e = 0; e < ne; ++e) {
-    if(mesh.is_boundary_edge(e)) continue;
-    r.edge_class[e] = internal::classify_edge(mesh, frames, e, internal::edge_holonomy(mesh, matchings.face_matching, e));
-    const auto& ev = mesh.edge_vertices(e);
-    if(r.edge_class[e] == internal::IMPROPER_CLASS) add(Meshability_reason::IMPROPER_EDGE, e, 0.5 * (point(ev[0]) + point(ev[1])));
-    else if(r.edge_class[e] == internal::JOG_CLASS) add(Meshability_reason::JOG, e, 0.5 * (point(ev[0]) + point(ev[1])));
-  }
-  if(!prescribed.empty() && !directions.empty()) {
-    const Boundary_valences b = compute_achieved_boundary_valences(mesh, frames, matchings, directions, prescribed);
-    for(Index e : mesh.boundary_edges()) {
-      const int p = prescribed[e], k = b.achieved[e];
-      if(p >= 5 ? ((k - p) % 4 + 4) % 4 != 0 : k != p) {
-        const auto& ev = mesh.edge_vertices(e);
-        add(Meshability_reason::FEATURE_SECTOR, e, 0.5 * (point(ev[0]) + point(ev[1])));
-      }
-    }
-  }
-  for(Index v = 0; v < mesh.number_of_vertices(); ++v) {
-    const internal::Vertex_singularity s = internal::vertex_singularity(mesh, r.edge_class, v);
-    if(s.kind != internal::Vertex_singularity::NONE) add(Meshability_reason(int(s.kind)), v, point(v));
-  }
-  for(Index f = 0; f < mesh.number_of_faces(); ++f) {
-    if(mesh.is_boundary_face(f)) continue;
-    const auto& ft = mesh.face_tetrahedra(f);
-    if(internal::closest_matching(frames[ft[0]], frames[ft[1]]).index == matchings.face_matching[f]) continue;
-    const auto& fv = mesh.face_vertices(f);
-    add(Meshability_reason::DISAGREEING_FACE, f, (point(fv[0]) + point(fv[1]) + point(fv[2])) / 3.0);
-  }
-  return r;
+  if(prescribed.empty() || directions.empty()) return internal::local_meshability(mesh, frames, matchings, nullptr, prescribed, true);
+  const Boundary_valences b = compute_achieved_boundary_valences(mesh, frames, matchings, directions, prescribed);
+  return internal::local_meshability(mesh, frames, matchings, &b.achieved, prescribed, true);
 }
 
 } // namespace Hexahedral_remeshing

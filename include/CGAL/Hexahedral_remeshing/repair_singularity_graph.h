@@ -98,12 +98,6 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
   return operations;
 }
 
-inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_meshability_reasons>& counts)
-{
-  return counts[std::size_t(Meshability_reason::IMPROPER_EDGE)] + counts[std::size_t(Meshability_reason::JOG)] +
-         counts[std::size_t(Meshability_reason::DANGLING_END)] + counts[std::size_t(Meshability_reason::ZIPPER)] +
-         counts[std::size_t(Meshability_reason::INVALID_NODE)] + counts[std::size_t(Meshability_reason::BOUNDARY_CONTACT)];
-}
 
 } // namespace internal
 

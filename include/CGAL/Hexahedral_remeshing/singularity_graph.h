@@ -240,6 +240,10 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
 
 namespace internal {
 
+// Whether achieved valence k is the prescribed p (modulo 4 for p >= 5: a frame field cannot tell k
+// from k + 4, paper Sec. 6.2).
+inline bool achieves_valence(int k, int p) { return p >= 5 ? ((k - p) % 4 + 4) % 4 == 0 : k == p; }
+
 // The valence boundary edge e gets from the frames and the matchings `face_matching` (Eq. 3 of the
 // paper, see compute_achieved_boundary_valences()); `k_real`, if given, receives the real value of Eq. 3.
 template <class Traits>
@@ -330,11 +334,7 @@ Boundary_valences compute_achieved_boundary_valences(const Tetrahedral_mesh_3<Tr
     r.achieved[e] = k;
     ++r.total;
     ++r.histogram[std::size_t((std::min)(k, 4))];
-    if(!prescribed.empty()) {
-      const int p = prescribed[e];
-      const bool ok = p >= 5 ? ((k - p) % 4 + 4) % 4 == 0 : k == p;
-      ok ? ++r.matched : ++r.mismatched;
-    }
+    if(!prescribed.empty()) internal::achieves_valence(k, prescribed[e]) ? ++r.matched : ++r.mismatched;
   }
   return r;
 }

@@ -61,6 +61,37 @@ void write_VTK_frame_field(const std::string& filename, const Tetrahedral_mesh_3
   write_VTK(filename, mesh, cell_arrays);
 }
 
+namespace internal_singularity_writer {
+
+// The mesh vertices a polyline file uses, each once, in order of first use: their positions and
+// their index in the mesh (the point array `vertex`).
+template <class Mesh>
+struct Polyline_points
+{
+  Polyline_points(const Mesh& m, const std::string& file) : mesh(m), filename(file), local(m.number_of_vertices(), std::size_t(-1)) {}
+
+  // The file's point of mesh vertex v.
+  std::size_t add(std::uint32_t v)
+  {
+    if(v >= mesh.number_of_vertices()) throw Error(filename + ": vertex " + std::to_string(v) + " is not a vertex of the mesh");
+    if(local[v] == std::size_t(-1)) {
+      local[v] = points.size();
+      const auto& p = mesh.point(typename Mesh::Index(v));
+      points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+      vertex.values.push_back(double(v));
+    }
+    return local[v];
+  }
+
+  const Mesh& mesh;
+  const std::string& filename;
+  std::vector<std::size_t> local;
+  std::vector<std::array<double, 3> > points;
+  VTK_array vertex;
+};
+
+} // namespace internal_singularity_writer
+
 /// \ingroup PkgHexahedralRemeshingRef
 /// Writes the singular curves of a frame field as VTK polylines (see `write_VTK_polylines()`), one
 /// polyline per curve of `graph.curves`, through the vertices of the curve. The points of the file
@@ -75,36 +106,23 @@ template <class Traits>
 void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_mesh_3<Traits>& mesh,
                                  const Singularity_graph& graph)
 {
-  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
-  const std::size_t none = std::size_t(-1);
-  std::vector<std::size_t> local(mesh.number_of_vertices(), none);
-  std::vector<std::array<double, 3> > points;
+  internal_singularity_writer::Polyline_points<Tetrahedral_mesh_3<Traits> > points(mesh, filename);
+  points.vertex.name = "vertex";
   std::vector<std::vector<std::size_t> > lines;
-  std::vector<VTK_array> cell_arrays(3), point_arrays(1);
+  std::vector<VTK_array> cell_arrays(3);
   cell_arrays[0].name = "valence";
   cell_arrays[1].name = "edges";
   cell_arrays[2].name = "closed";
-  point_arrays[0].name = "vertex";
   for(const Singular_curve& c : graph.curves) {
     std::vector<std::size_t> line;
-    for(std::uint32_t v : c.vertices) {
-      if(v >= mesh.number_of_vertices())
-        throw Error(filename + ": curve vertex " + std::to_string(v) + " is not a vertex of the mesh");
-      if(local[v] == none) {
-        local[v] = points.size();
-        const auto& p = mesh.point(Index(v));
-        points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-        point_arrays[0].values.push_back(double(v));
-      }
-      line.push_back(local[v]);
-    }
+    for(std::uint32_t v : c.vertices) line.push_back(points.add(v));
     if(line.size() < 2) continue; // a curve always has an edge; be safe
     lines.push_back(line);
     cell_arrays[0].values.push_back(double(c.valence));
     cell_arrays[1].values.push_back(double(c.edges.size()));
     cell_arrays[2].values.push_back(c.closed ? 1. : 0.);
   }
-  write_VTK_polylines(filename, points, lines, cell_arrays, point_arrays);
+  write_VTK_polylines(filename, points.points, lines, cell_arrays, {points.vertex});
 }
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -124,10 +142,8 @@ void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_
                                  const Singularity_graph& graph, const Local_meshability_report& check)
 {
   typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
-  const std::size_t none = std::size_t(-1);
   if(check.edge_class.size() != mesh.number_of_edges())
     throw Error(filename + ": the meshability check is not of this mesh");
-  std::vector<std::size_t> local(mesh.number_of_vertices(), none);
   std::vector<int> vertex_reason(mesh.number_of_vertices(), -1);
   std::vector<int> edge_reason(mesh.number_of_edges(), -1);
   for(const Meshability_violation& v : check.violations) {
@@ -135,37 +151,28 @@ void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_
     else if(v.reason != Meshability_reason::FEATURE_SECTOR && v.reason != Meshability_reason::DISAGREEING_FACE)
       vertex_reason[v.index] = int(v.reason);
   }
-  std::vector<std::array<double, 3> > points;
+  internal_singularity_writer::Polyline_points<Tetrahedral_mesh_3<Traits> > points(mesh, filename);
+  points.vertex.name = "vertex";
   std::vector<std::vector<std::size_t> > lines;
-  std::vector<VTK_array> cell_arrays(3), point_arrays(2);
+  std::vector<VTK_array> cell_arrays(3);
   cell_arrays[0].name = "valence";
   cell_arrays[1].name = "curve";
   cell_arrays[2].name = "reason";
-  point_arrays[0].name = "vertex";
-  point_arrays[1].name = "reason";
-  auto add_point = [&](std::uint32_t v) {
-    if(v >= mesh.number_of_vertices()) throw Error(filename + ": vertex " + std::to_string(v) + " is not a vertex of the mesh");
-    if(local[v] == none) {
-      local[v] = points.size();
-      const auto& p = mesh.point(Index(v));
-      points.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-      point_arrays[0].values.push_back(double(v));
-      point_arrays[1].values.push_back(double(vertex_reason[v]));
-    }
-    return local[v];
-  };
   for(std::size_t c = 0; c < graph.curves.size(); ++c)
     for(std::uint32_t e : graph.curves[c].edges) {
       if(e >= mesh.number_of_edges()) throw Error(filename + ": curve edge " + std::to_string(e) + " is not an edge of the mesh");
       const auto& ev = mesh.edge_vertices(Index(e));
-      lines.push_back({add_point(std::uint32_t(ev[0])), add_point(std::uint32_t(ev[1]))});
+      lines.push_back({points.add(std::uint32_t(ev[0])), points.add(std::uint32_t(ev[1]))});
       cell_arrays[0].values.push_back(double(graph.curves[c].valence));
       cell_arrays[1].values.push_back(double(c));
       cell_arrays[2].values.push_back(double(edge_reason[e]));
     }
   for(Index v = 0; v < mesh.number_of_vertices(); ++v)
-    if(vertex_reason[v] >= 0) add_point(std::uint32_t(v));
-  write_VTK_polylines(filename, points, lines, cell_arrays, point_arrays);
+    if(vertex_reason[v] >= 0) points.add(std::uint32_t(v));
+  VTK_array reason;
+  reason.name = "reason";
+  for(double v : points.vertex.values) reason.values.push_back(double(vertex_reason[std::size_t(v)]));
+  write_VTK_polylines(filename, points.points, lines, cell_arrays, {points.vertex, reason});
 }
 
 } // namespace IO

@@ -31,10 +31,10 @@ namespace internal {
 struct Compared_defects
 {
   std::size_t graph = 0, curves = 0;
-  explicit Compared_defects(const Local_meshability_report& c)
-    : graph(c.graph_defects()),
-      curves(c.count(Meshability_reason::IMPROPER_EDGE) + c.count(Meshability_reason::JOG) +
-             c.count(Meshability_reason::DANGLING_END) + c.count(Meshability_reason::ZIPPER))
+  explicit Compared_defects(const std::array<std::size_t, number_of_meshability_reasons>& c)
+    : graph(graph_defect_count(c)),
+      curves(c[std::size_t(Meshability_reason::IMPROPER_EDGE)] + c[std::size_t(Meshability_reason::JOG)] +
+             c[std::size_t(Meshability_reason::DANGLING_END)] + c[std::size_t(Meshability_reason::ZIPPER)])
   {}
   bool no_worse_than(const Compared_defects& o) const { return graph <= o.graph && curves <= o.curves; }
   bool better_than(const Compared_defects& o) const { return no_worse_than(o) && (graph < o.graph || curves < o.curves); }
@@ -57,16 +57,17 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
   Matchings repaired = matchings;
   const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
   Singularity_repair_result r = repair_singularity_graph(mesh, frames, repaired, normals, np);
-  const Compared_defects kept_before(check_local_meshability(mesh, frames, matchings));
-  const Compared_defects alone_before(frame_check(mesh, frames));
+  // the surgery's own check of the realigned field with the kept matchings
+  const Compared_defects kept_before(r.defects_before);
+  const Compared_defects alone_before(frame_check(mesh, frames).counts);
   r.graph_defects_before = r.graph_defects_after = kept_before.graph;
   r.frame_graph_defects_before = r.frame_graph_defects_after = alone_before.graph;
   r.accepted = false;
   if(r.changed_faces > 0) {
     std::vector<Eigen::Matrix3d> reoptimized = frames;
     realign_frame_field(mesh, reoptimized, repaired, normals, realignment_np);
-    const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired));
-    const Compared_defects alone(frame_check(mesh, reoptimized));
+    const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired).counts);
+    const Compared_defects alone(frame_check(mesh, reoptimized).counts);
     r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
                  (kept.better_than(kept_before) || alone.better_than(alone_before));
     if(r.accepted) {
