@@ -9,6 +9,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/read_VTK.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_boundary_groups.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_to_lcc.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
@@ -432,6 +433,81 @@ TEST(HexahedralMeshIO, RoundTripMEDITAndVTK)
   EXPECT_EQ(back.hexahedra, plain.hexahedra);
   std::remove(vtk.c_str());
   std::remove(medit.c_str());
+}
+
+// Boundary groups of a 3 x 2 x 1 box from its own boundary, checked from the cells: each patch is one
+// side of the box (every quad's vertices on that plane), the feature edges are the 12 box edges.
+TEST(HexahedralBoundaryGroups, BoxFromItsOwnSharpEdges)
+{
+  auto m = T::make_grid(3, 2, 1).mesh;
+  const HR::Hexahedral_boundary_groups_report r = HR::compute_hexahedral_boundary_groups(m);
+  EXPECT_EQ(r.boundary_quadrilaterals, 2u * (6 + 2 + 3));
+  EXPECT_EQ(r.patches, 6u);
+  EXPECT_EQ(r.curves, 12u);
+  EXPECT_EQ(r.feature_edges, 4u * (3 + 2 + 1));
+  const double extent[3] = {3, 2, 1};
+  std::map<int, std::set<std::pair<int, double> > > planes;  // patch -> the (axis, value) its quads share
+  std::map<int, std::size_t> quads_per_patch;
+  for(const auto& q : m.boundary_quadrilaterals) {
+    ++quads_per_patch[q.patch];
+    std::set<std::pair<int, double> > common;
+    for(int d = 0; d < 3; ++d) {
+      bool same = true;
+      for(auto v : q.vertices) same = same && m.points[v][d] == m.points[q.vertices[0]][d];
+      if(same) common.insert(std::make_pair(d, m.points[q.vertices[0]][d]));
+    }
+    ASSERT_EQ(common.size(), 1u);
+    EXPECT_TRUE(common.begin()->second == 0 || common.begin()->second == extent[common.begin()->first]);
+    planes[q.patch].insert(*common.begin());
+    // outward: the normal points away from the box centre
+    const auto& p = m.points;
+    const auto n = CGAL::cross_product(p[q.vertices[1]] - p[q.vertices[0]], p[q.vertices[2]] - p[q.vertices[0]]);
+    const HR::Hexahedral_mesh_3::Point_3 centre(1.5, 1, 0.5);
+    EXPECT_GT(n * (p[q.vertices[0]] - centre), 0);
+    // face numbering: the quad is face q.face of its hexahedron
+    for(int i = 0; i < 4; ++i) EXPECT_EQ(q.vertices[i], m.hexahedra[q.hexahedron][HR::internal::hex_faces()[q.face][i]]);
+  }
+  for(const auto& kv : planes) EXPECT_EQ(kv.second.size(), 1u) << "patch " << kv.first << " spans several sides";
+  std::multiset<std::size_t> sizes;
+  for(const auto& kv : quads_per_patch) sizes.insert(kv.second);
+  EXPECT_EQ(sizes, (std::multiset<std::size_t>{2, 2, 3, 3, 6, 6}));
+  for(const auto& e : m.feature_edges) {
+    int on_sides = 0;  // a box edge lies on two sides
+    for(int d = 0; d < 3; ++d) {
+      const double a = m.points[e.vertices[0]][d], b = m.points[e.vertices[1]][d];
+      on_sides += a == b && (a == 0 || a == extent[d]);
+    }
+    EXPECT_EQ(on_sides, 2);
+  }
+}
+
+// Every writer carries the groups: MEDIT's Quadrilaterals read back by the package's reader, the
+// others checked by test_hexmesh_cli.sh with an independent parser and gmsh's Python module.
+TEST(HexahedralMeshIO, SolverFormatsAreWrittenAtomically)
+{
+  auto m = T::make_grid(2, 1, 1).mesh;
+  for(const std::string ext : {"inp", "msh", "vtu", "mesh"}) {
+    SCOPED_TRACE(ext);
+    const std::string file = temp_file("groups." + ext);
+    HR::IO::write_hexahedral_mesh(file, m);
+    EXPECT_TRUE(std::filesystem::exists(file));
+    EXPECT_FALSE(std::filesystem::exists(file + ".tmp"));
+    EXPECT_FALSE(std::filesystem::exists(file + ".tmp.msh"));
+    const std::string text = file_text(file);
+    if(ext == "inp") {
+      EXPECT_NE(text.find("*ELEMENT, TYPE=C3D8, ELSET=PART\n1, 1, 2, 5, 4, 7, 8, 11, 10\n"), std::string::npos) << text.substr(0, 600);
+      EXPECT_NE(text.find("*SURFACE, NAME=patch_"), std::string::npos);
+    }
+    if(ext == "mesh") {
+      EXPECT_NE(text.find("Quadrilaterals\n10\n"), std::string::npos);
+      HR::Hexahedral_mesh_3 back;
+      HR::IO::read_hexahedral_mesh(file, back);
+      EXPECT_EQ(back.hexahedra, m.hexahedra);
+    }
+    if(ext == "vtu") EXPECT_NE(text.find("Name=\"patch\""), std::string::npos);
+    if(ext == "msh") EXPECT_NE(text.find("$PhysicalNames\n"), std::string::npos);
+    std::remove(file.c_str());
+  }
 }
 
 TEST(HexahedralMeshIO, WritersRejectBrokenMeshesAndLeaveNoFile)

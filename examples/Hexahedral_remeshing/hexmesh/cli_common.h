@@ -49,6 +49,7 @@ public:
         if(contains(flags_with_value, name)) {
           if(i + 1 >= argc) throw Usage_error("option --" + name + " needs a value");
           m_values[name] = argv[++i];
+          m_all[name].push_back(argv[i]);
         } else if(contains(flags_without_value, name)) {
           m_values[name] = "";
         } else {
@@ -85,6 +86,12 @@ public:
     return int(d);
   }
   const std::vector<std::string>& positional() const { return m_positional; }
+  // Every value of an option given several times (e.g. --out A.mesh --out A.inp), in order.
+  std::vector<std::string> all(const std::string& name) const
+  {
+    auto it = m_all.find(name);
+    return it == m_all.end() ? std::vector<std::string>() : it->second;
+  }
 
 private:
   static bool contains(const std::vector<std::string>& v, const std::string& s)
@@ -93,6 +100,7 @@ private:
     return false;
   }
   std::map<std::string, std::string> m_values;
+  std::map<std::string, std::vector<std::string> > m_all;
   std::vector<std::string> m_positional;
 };
 

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -27,16 +28,23 @@ inline std::vector<std::string> extract_options() { return {"out", "json"}; }
 inline std::vector<std::string> extract_flags() { return {"quiet"}; }
 
 // The output file of a hex mesh: .mesh (MEDIT, HexaLab) or .vtk (ParaView); checked before any work.
-inline std::string hex_output_option(const Arguments& args, const std::string& command)
+// The hex mesh files (--out, possibly several: one per format), checked by extension.
+inline std::vector<std::string> hex_output_options(const Arguments& args, const std::string& command)
 {
-  if(!args.has("out")) throw Usage_error(command + " needs --out OUT.mesh or --out OUT.vtk");
-  const std::string out = args.value("out");
-  auto ends_with = [&](const std::string& ext) {
-    return out.size() > ext.size() && out.compare(out.size() - ext.size(), ext.size(), ext) == 0;
-  };
-  if(!ends_with(".mesh") && !ends_with(".vtk"))
-    throw Usage_error("--out " + out + ": the hex mesh is written as .mesh (MEDIT, HexaLab) or .vtk (ParaView)");
-  return out;
+  if(!args.has("out")) throw Usage_error(command + " needs --out OUT.{mesh,vtk,vtu,inp,msh}");
+  std::vector<std::string> outs = args.all("out");
+  if(outs.empty()) outs.push_back(args.value("out"));
+  for(const std::string& out : outs) {
+    std::string lower = out;
+    for(char& c : lower) c = char(std::tolower((unsigned char)c));
+    auto ends_with = [&](const std::string& ext) {
+      return lower.size() > ext.size() && lower.compare(lower.size() - ext.size(), ext.size(), ext) == 0;
+    };
+    if(!ends_with(".mesh") && !ends_with(".vtk") && !ends_with(".vtu") && !ends_with(".inp") && !ends_with(".msh"))
+      throw Usage_error("--out " + out + ": the hex mesh is written as .mesh (MEDIT: HexaLab, gmsh), .vtk or .vtu "
+                        "(ParaView), .inp (Abaqus, CalculiX) or .msh (gmsh 4.1)");
+  }
+  return outs;
 }
 
 // The hex-mesh quality block shared by the JSON reports of extract and remesh.
@@ -93,9 +101,10 @@ inline int command_extract(const Arguments& args)
   if(args.positional().size() != 1) throw Usage_error("extract expects one input map (.hexex)");
   const std::string& in = args.positional()[0];
   const bool quiet = args.has("quiet");
-  const std::string out = hex_output_option(args, "extract");
+  const std::vector<std::string> outs = hex_output_options(args, "extract");
+  const std::string& out = outs.front();
   Output_files outputs;
-  outputs.add(out);
+  for(const std::string& o : outs) outputs.add(o);
   if(args.has("json")) outputs.add(args.value("json"));
 
   Progress progress(quiet);
@@ -121,7 +130,7 @@ inline int command_extract(const Arguments& args)
   progress.finish();
 
   progress.start("writing the outputs");
-  outputs.write({out}, [&] { HR::IO::write_hexahedral_mesh(out, hexes); });
+  for(const std::string& o : outs) outputs.write({o}, [&] { HR::IO::write_hexahedral_mesh(o, hexes); });
   if(args.has("json")) {
     Json json;
     json.begin().value("input", in).value("tetrahedra", map.number_of_tetrahedra()).value("output", out);

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s) : Hexahedral_remeshing developers
 //
-// hexmesh remesh IN --out OUT.{mesh,vtk} [--target-edge-length H | --hexahedra N] [--heuristic NAME]
+// hexmesh remesh IN --out OUT.{mesh,vtk,vtu,inp,msh} [--target-edge-length H | --hexahedra N] [--heuristic NAME]
 //                [--valences F] [--valences-out F] [--baseline] [--no-smoothing] [--frames F] [--singularities F] [--json F]
 //                [--hexex F] [--acute-edge-band R] [--keep-partial] [--threads N] [--quiet]
 // The whole pipeline in one call, CGAL::hexahedral_remeshing(): tetrahedra in, hexahedra out.
@@ -43,13 +43,14 @@ inline int command_remesh(const Arguments& args)
   if(args.positional().size() != 1) throw Usage_error("remesh expects one input file");
   const std::string& in = args.positional()[0];
   const Frame_field_options options = frame_field_options(args);
-  const std::string out = hex_output_option(args, "remesh");
+  const std::vector<std::string> outs = hex_output_options(args, "remesh");
+  const std::string& out = outs.front();
   const double target = target_edge_length_option(args);
   if(args.has("target-edge-length") && args.has("hexahedra"))
     throw Usage_error("give either --target-edge-length or --hexahedra, not both");
   const std::size_t hexahedra = args.has("hexahedra") ? std::size_t(args.integer("hexahedra", 0, 1, 20000000)) : 0;
   Output_files outputs;
-  outputs.add(out);
+  for(const std::string& o : outs) outputs.add(o);
   for(const char* o : {"frames", "singularities", "json", "valences-out", "hexex"})
     if(args.has(o)) outputs.add(args.value(o));
 
@@ -85,7 +86,7 @@ inline int command_remesh(const Arguments& args)
   const bool write_hexes = ok || (args.has("keep-partial") && hexes.number_of_hexahedra() > 0);
 
   progress.start("writing the outputs");
-  if(write_hexes) outputs.write({out}, [&] { HR::IO::write_hexahedral_mesh(out, hexes); });
+  if(write_hexes) for(const std::string& o : outs) outputs.write({o}, [&] { HR::IO::write_hexahedral_mesh(o, hexes); });
   // a failed run writes its JSON report only (and the partial outputs with --keep-partial)
   if(args.has("frames") && write_hexes) {
     const std::string f = args.value("frames");
@@ -146,6 +147,12 @@ inline int command_remesh(const Arguments& args)
                                                                                  : std::numeric_limits<double>::quiet_NaN())
         .value("volume_ratio", r.volume_ratio)
         .end();
+    json.begin("boundary_groups")
+        .value("quadrilaterals", r.boundary_groups.boundary_quadrilaterals)
+        .value("patches", r.boundary_groups.patches)
+        .value("feature_edges", r.boundary_groups.feature_edges)
+        .value("curves", r.boundary_groups.curves)
+        .end();
     json.begin("seconds")
         .value("read", read_seconds)
         .value("frame_field", f.seconds)
@@ -186,6 +193,9 @@ inline int command_remesh(const Arguments& args)
       else
         std::cout << "not computed (the smoothing did not run)\n";
       std::cout << std::defaultfloat;
+      std::cout << "  boundary groups     " << r.boundary_groups.patches << " surface patches ("
+                << r.boundary_groups.boundary_quadrilaterals << " quads), " << r.boundary_groups.curves
+                << " feature curves (" << r.boundary_groups.feature_edges << " hex edges): groups of .inp, .msh, .vtu, .mesh\n";
       if(r.extraction.incomplete_cells > 0)
         std::cout << "  incomplete          " << r.extraction.incomplete_cells
                   << " cells of the map could not be completed and are missing\n"
@@ -200,7 +210,8 @@ inline int command_remesh(const Arguments& args)
               << f.seconds << ", map " << r.map.seconds << ", extraction " << r.extraction.seconds << ", smoothing "
               << r.smoothing.seconds << ", check " << r.check_seconds << ", total " << r.seconds << "\n" << std::defaultfloat;
     if(!ok) std::cout << "  failed stage        " << r.failed_stage << ": " << r.failure_reason << "\n";
-    if(write_hexes) std::cout << "  hex mesh            " << out << (ok ? "" : " (partial: --keep-partial)") << "\n";
+    if(write_hexes)
+      for(const std::string& o : outs) std::cout << "  hex mesh            " << o << (ok ? "" : " (partial: --keep-partial)") << "\n";
     if(args.has("frames")) std::cout << "  ParaView            " << args.value("frames") << " (frames: Glyph on frame_u, frame_v, frame_w)\n";
     if(args.has("singularities")) std::cout << "  ParaView            " << args.value("singularities") << " (singular curves)\n";
     if(args.has("valences-out")) std::cout << "  valences            " << args.value("valences-out") << " (a b k: edit, then --valences)\n";

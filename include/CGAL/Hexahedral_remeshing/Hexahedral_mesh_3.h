@@ -9,6 +9,8 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -26,6 +28,35 @@ struct Hexahedral_vertex_location
   int dimension = -1;
   /// Local vertices (0..3) of the simplex in `tetrahedron`; the first `dimension + 1` are used.
   std::array<std::uint8_t, 4> local_vertices{ {0, 1, 2, 3} };
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// A boundary quadrilateral of a hexahedral mesh: face `face` of hexahedron `hexahedron`, with the
+/// surface patch of the input it lies on. The faces of a hexahedron are numbered as the faces
+/// S1..S6 of Abaqus' and CalculiX's `C3D8` element (`face` 0 is S1): in VTK order, 0 = (0 1 2 3),
+/// 1 = (4 5 6 7), 2 = (0 1 5 4), 3 = (1 2 6 5), 4 = (2 3 7 6), 5 = (3 0 4 7).
+struct Hexahedral_boundary_quadrilateral
+{
+  /// The 4 vertices, counter-clockwise seen from outside the mesh.
+  std::array<std::uint32_t, 4> vertices{ {0, 0, 0, 0} };
+  /// The hexahedron the quadrilateral bounds.
+  std::uint32_t hexahedron = 0;
+  /// Local face (0..5, see above) of `hexahedron`.
+  std::uint8_t face = 0;
+  /// Surface patch: the CAD face (STEP, BREP, IGES, `.msh` entity tag), the patch of a C3t3 or of a
+  /// tagged MEDIT/VTK input, or a region between sharp edges numbered from 0; -1 if unknown.
+  int patch = -1;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// A hex edge on a feature curve of the input (a sharp edge: where two surface patches meet).
+struct Hexahedral_feature_edge
+{
+  /// The 2 vertices.
+  std::array<std::uint32_t, 2> vertices{ {0, 0} };
+  /// The feature curve: the CAD curve (entity tag), the curve id of the input, or, without them, a
+  /// number per pair of patches that meet; -1 if unknown.
+  int curve = -1;
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -63,6 +94,15 @@ struct Hexahedral_mesh_3
   std::vector<std::uint8_t> vertex_tags;
   /// Per hexahedron: the tetrahedron of the source mesh that contains its centre (optional).
   std::vector<Index> hexahedron_source_tetrahedra;
+  /// The boundary quadrilaterals with their surface patch (optional; filled by
+  /// `hexahedral_remeshing()` and `compute_hexahedral_boundary_groups()`), sorted by patch, then
+  /// hexahedron and face. Solver formats write one boundary group per patch.
+  std::vector<Hexahedral_boundary_quadrilateral> boundary_quadrilaterals;
+  /// The hex edges on feature curves with their curve (optional, filled with `boundary_quadrilaterals`).
+  std::vector<Hexahedral_feature_edge> feature_edges;
+  /// Names of surface patches given by the input (CAD face names, physical group names), as
+  /// (patch, name) pairs sorted by patch; a patch without a name is written `patch_<id>`.
+  std::vector<std::pair<int, std::string> > patch_names;
 
   /// Number of vertices.
   std::size_t number_of_vertices() const { return points.size(); }
@@ -72,7 +112,7 @@ struct Hexahedral_mesh_3
   void clear()
   {
     points.clear(); hexahedra.clear(); vertex_locations.clear(); vertex_tags.clear();
-    hexahedron_source_tetrahedra.clear();
+    hexahedron_source_tetrahedra.clear(); boundary_quadrilaterals.clear(); feature_edges.clear(); patch_names.clear();
   }
 };
 

@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_REMESHING_RESULT_H
 
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_boundary_groups.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
@@ -127,9 +128,12 @@ struct Hexahedral_remeshing_result
   /// Volume of the hex mesh over the volume of the tetrahedral mesh (1 when the hexahedra fill the solid
   /// exactly; curved boundaries make it differ by O(edge length / size)).
   double volume_ratio = 0;
-  /// Length of the sharp edges of the input (feature curves and edges of prescribed valence other than 2).
+  /// Length of the sharp edges of the input: its boundary edges of prescribed valence other than 2 (a
+  /// CAD curve between tangent faces or a seam is not sharp).
   double feature_length = 0;
-  /// Share (0..1) of `feature_length` covered by boundary hex edges lying along the sharp edges.
+  /// Share (0..1) of `feature_length` followed by boundary hex edges: hex edges whose endpoints lie on
+  /// the sharp edges and whose midpoint is within 10% of their length of them (chords of a curved sharp
+  /// edge count), the sharp edges covered where they are that close to such a hex edge.
   double feature_coverage = 0;
   /// Boundary hex edges lying along sharp edges, and how many of them have the prescribed valence
   /// (number of hexahedra around them).
@@ -139,6 +143,9 @@ struct Hexahedral_remeshing_result
   /// Approximate Hausdorff distance between the hex boundary and the input boundary over the bounding
   /// box diagonal (-1 if the smoothing did not run: it computes it).
   double relative_hausdorff_distance = -1;
+  /// The boundary groups of the hex mesh (`Hexahedral_mesh_3::boundary_quadrilaterals` and
+  /// `feature_edges`, filled from the input's surface patches and feature curves when hexahedra were made).
+  Hexahedral_boundary_groups_report boundary_groups;
   /// Seconds of the preprocessing of a C3t3 or surface input (0 for a `Tetrahedral_mesh_3`).
   double preprocessing_seconds = 0;
   /// Seconds of the check and the feature measures.

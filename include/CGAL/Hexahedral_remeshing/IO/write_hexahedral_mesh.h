@@ -5,7 +5,10 @@
 #define CGAL_HEXAHEDRAL_REMESHING_IO_WRITE_HEXAHEDRAL_MESH_H
 
 #include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_Abaqus.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_VTU.h>
+#include <CGAL/Hexahedral_remeshing/IO/write_gmsh.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 
@@ -44,14 +47,19 @@ inline void check_writable(const std::string& filename, const Hexahedral_mesh_3&
 /// \ingroup PkgHexahedralRemeshingRef
 /// Writes `hexes` as a MEDIT ASCII `.mesh` file (`MeshVersionFormatted 1`, `Dimension 3`):
 /// `Vertices` (x y z, reference = the `Hexahedral_mesh_3::Vertex_tag` bits, 0 without tags) and
-/// `Hexahedra` (8 indices, 1-based, in VTK order, which is MEDIT's; reference 1). Vertex `v` and
-/// hexahedron `h` of the file are `v` and `h` of `hexes`. HexaLab (hexalab.net) and gmsh open it;
+/// `Hexahedra` (8 indices, 1-based, in VTK order, which is MEDIT's; reference 1), the boundary
+/// `Quadrilaterals` (outward; reference = their surface patch, 0 if unknown) and the feature `Edges`
+/// (reference = their curve + 1). A mesh without boundary groups is grouped by its own sharp edges
+/// (`compute_hexahedral_boundary_groups()` on a copy). Vertex `v` and hexahedron `h` of the file
+/// are `v` and `h` of `hexes`. HexaLab (hexalab.net) and gmsh open it;
 /// `read_hexahedral_mesh()` reads it back. The file is written atomically (`write_file_atomically()`).
 /// \throws Error if a hexahedron refers to a missing vertex, an optional array has a wrong size, or
 ///         the file cannot be written (nothing is left behind then).
 inline void write_MEDIT(const std::string& filename, const Hexahedral_mesh_3& hexes)
 {
   internal_hex_writer::check_writable(filename, hexes);
+  const internal::Grouped_mesh grouped(hexes);
+  const Hexahedral_mesh_3& m = grouped.mesh();
   write_file_atomically(filename, [&](std::ostream& out) {
     out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << hexes.points.size() << "\n";
     for(std::size_t v = 0; v < hexes.points.size(); ++v) {
@@ -64,6 +72,17 @@ inline void write_MEDIT(const std::string& filename, const Hexahedral_mesh_3& he
       for(int i = 0; i < 8; ++i)
         out << h[i] + 1 << " ";
       out << "1\n";
+    }
+    if(!m.boundary_quadrilaterals.empty()) {
+      out << "Quadrilaterals\n" << m.boundary_quadrilaterals.size() << "\n";
+      for(const auto& q : m.boundary_quadrilaterals)
+        out << q.vertices[0] + 1 << " " << q.vertices[1] + 1 << " " << q.vertices[2] + 1 << " " << q.vertices[3] + 1 << " "
+            << (q.patch < 0 ? 0 : q.patch) << "\n";
+    }
+    if(!m.feature_edges.empty()) {
+      out << "Edges\n" << m.feature_edges.size() << "\n";
+      for(const auto& e : m.feature_edges)
+        out << e.vertices[0] + 1 << " " << e.vertices[1] + 1 << " " << (e.curve < 0 ? 0 : e.curve + 1) << "\n";
     }
     out << "End\n";
   });
@@ -125,8 +144,10 @@ inline void write_VTK(const std::string& filename, const Hexahedral_mesh_3& hexe
 }
 
 /// \ingroup PkgHexahedralRemeshingRef
-/// Writes `hexes` with `write_MEDIT()` for a `.mesh` file name or `write_VTK()` for a `.vtk` one
-/// (case-insensitive).
+/// Writes `hexes` by the extension of `filename` (case-insensitive): `.mesh` `write_MEDIT()` (HexaLab,
+/// gmsh), `.vtk` `write_VTK()` (ParaView), `.vtu` `write_VTU()` (ParaView), `.inp` `write_Abaqus()`
+/// (Abaqus, CalculiX), `.msh` `write_gmsh()` (gmsh 4.1, and the solvers that read it). Every format
+/// but legacy `.vtk` carries the boundary groups.
 /// \throws Error for another extension, or as the writer called.
 inline void write_hexahedral_mesh(const std::string& filename, const Hexahedral_mesh_3& hexes)
 {
@@ -140,8 +161,14 @@ inline void write_hexahedral_mesh(const std::string& filename, const Hexahedral_
     write_MEDIT(filename, hexes);
   else if(ext == "vtk")
     write_VTK(filename, hexes);
+  else if(ext == "vtu")
+    write_VTU(filename, hexes);
+  else if(ext == "inp")
+    write_Abaqus(filename, hexes);
+  else if(ext == "msh")
+    write_gmsh(filename, hexes);
   else
-    throw Error(filename + ": unknown extension for a hexahedral mesh (use .mesh or .vtk)");
+    throw Error(filename + ": unknown extension for a hexahedral mesh (use .mesh, .vtk, .vtu, .inp or .msh)");
 }
 
 } // namespace IO
