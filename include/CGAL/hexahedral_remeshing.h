@@ -130,8 +130,10 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///          was produced but is not valid, `NO_HEXAHEDRA` when the map has no complete cell; `message`
 ///          says why in one line.
 /// \throws Hexahedral_remeshing::Input_error for a defective input (an invalid C3t3 or surface, an
-///         impossible prescription, a non-positive target edge length); Hexahedral_remeshing::Error if a
-///         stage cannot run.
+///         impossible prescription, a non-positive target edge length, a hex size that fits no layer of
+///         hexahedra in the part's walls: thinner than half the hex edge over most of the surface, the
+///         message naming the thickness and a size that fits); Hexahedral_remeshing::Error if a stage
+///         cannot run.
 template <class Input, class Output, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Hexahedral_remeshing::Hexahedral_remeshing_result
 hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& np = CGAL::parameters::default_values())

@@ -130,6 +130,40 @@ inline void tetrahedralize_for_hex_size(const Arguments& args, const std::string
   progress.finish();
 }
 
+// A CAD part (without --mesh-size) is measured on a surface mesh first (seconds): its volume gives the
+// hex size, its walls are checked against it (a wall thinner than half a hexahedron is refused here,
+// before a tetrahedralization that would take minutes), and it is tetrahedralized once, at the size
+// of tetrahedralize_for_hex_size() or the default size, whichever is finer. Returns false for
+// another input (nothing read).
+inline bool read_cad_at_hex_size(const Arguments& args, const std::string& in, Mesh& mesh, double target,
+                                 std::size_t hexahedra, Progress& progress)
+{
+  namespace HR = CGAL::Hexahedral_remeshing;
+  const std::string ext = HR::IO::file_extension(in);
+  const bool cad = ext == "step" || ext == "stp" || ext == "brep" || ext == "iges" || ext == "igs";
+  if(!cad || args.has("mesh-size") || args.has("max-volume")) return false;
+  progress.start("measuring " + in);
+  const HR::IO::CAD_part_measures m = HR::IO::measure_CAD_part(in, input_time_limit(args));
+  progress.finish();
+  const double h = target > 0 ? target : std::cbrt(m.volume / (hexahedra > 0 ? double(hexahedra) : 2000.));
+  if(m.wall_thickness < HR::internal::minimum_wall_thickness_over_hex_edge * h) {
+    HR::internal::Wall_thickness w;
+    w.location = m.wall_location;
+    throw HR::Input_error(in, 0, HR::internal::thin_wall_for_hexahedra_message(m.wall_thickness, w.where(), h, m.volume));
+  }
+  const double max_volume = HR::internal::hex_size_tetrahedron_volume(m.volume, h);
+  double size = m.diagonal / 20;
+  if(max_volume > 0) size = (std::min)(size, 0.6 * std::cbrt(6 * max_volume));
+  Arguments sized = args;
+  std::ostringstream os;
+  os << std::setprecision(17) << size;
+  sized.set("mesh-size", os.str());
+  progress.start("reading " + in + " (tetrahedralized at the hex size)");
+  read_input_mesh(sized, in, mesh, !args.has("no-chord-split"));
+  progress.finish();
+  return true;
+}
+
 // The size of the hexahedra a command will make, for tetrahedralize_for_hex_size().
 struct Hex_size
 {
@@ -143,13 +177,15 @@ inline double read_frame_field_input(const Arguments& args, const std::string& i
                                      std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress,
                                      const Hex_size* size = nullptr)
 {
-  progress.start("reading " + in);
-  read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
-  double seconds = progress.finish();
   const auto start = std::chrono::steady_clock::now();
-  if(size != nullptr) tetrahedralize_for_hex_size(args, in, mesh, size->target, size->hexahedra, progress);
+  if(size == nullptr || !read_cad_at_hex_size(args, in, mesh, size->target, size->hexahedra, progress)) {
+    progress.start("reading " + in);
+    read_input_mesh(args, in, mesh, !args.has("no-chord-split"));
+    progress.finish();
+    if(size != nullptr) tetrahedralize_for_hex_size(args, in, mesh, size->target, size->hexahedra, progress);
+  }
   if(args.has("valences")) prescribed = CGAL::Hexahedral_remeshing::IO::read_edge_valences(args.value("valences"), mesh);
-  return seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // "improper_edge 3, jog 12" (the reasons with violations), or "none".

@@ -11,6 +11,8 @@
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/mesh_statistics.h>
 
+#include <cmath>
+
 namespace hexmesh {
 
 typedef CGAL::Hexahedral_remeshing::Tetrahedral_mesh_3<> Mesh;
@@ -55,7 +57,15 @@ inline void print_statistics(std::ostream& out, const std::string& file, const C
 }
 
 // Options every command reading a mesh accepts.
-inline std::vector<std::string> input_options() { return {"max-volume", "radius-edge", "mesh-size", "coincident-vertices"}; }
+inline std::vector<std::string> input_options() { return {"max-volume", "radius-edge", "mesh-size", "coincident-vertices", "time-limit"}; }
+
+// Seconds after which gmsh or TetGen is stopped (--time-limit; 0: none).
+inline double input_time_limit(const Arguments& args)
+{
+  const double limit = args.number("time-limit", 900.);
+  if(!(limit >= 0) || !std::isfinite(limit)) throw Usage_error("option --time-limit expects a number of seconds (0: no limit)");
+  return limit;
+}
 
 // Reads the input; `split_chords` also splits the interior edges joining two boundary vertices
 // (what the frame-field pipeline needs at acute features).
@@ -78,7 +88,8 @@ inline void read_input_mesh(const Arguments& args, const std::string& in, Mesh& 
   CGAL::Hexahedral_remeshing::IO::read_tetrahedral_mesh(
     in, mesh, HP::maximum_tetrahedron_volume(args.number("max-volume", 0.), HP::radius_edge_ratio(args.number("radius-edge", 2.),
               HP::split_boundary_chords(split_chords, HP::mesh_size(mesh_size,
-              HP::acute_edge_grading(!args.has("no-acute-grading"), HP::coincident_vertices(policy)))))));
+              HP::acute_edge_grading(!args.has("no-acute-grading"), HP::coincident_vertices(policy,
+              HP::time_limit(input_time_limit(args)))))))));
 }
 
 inline int command_info(const Arguments& args)

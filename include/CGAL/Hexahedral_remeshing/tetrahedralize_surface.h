@@ -272,7 +272,7 @@ void tetrahedralize_checked_surface(CGAL::Surface_mesh<CGAL::Exact_predicates_in
       result.tetrahedra.push_back({std::size_t(c[0]), std::size_t(c[1]), std::size_t(c[2]), std::size_t(c[3])});
     }
     return internal::serialize_soup(result);
-  }, source, "TetGen");
+  }, source, "TetGen", choose_parameter(get_parameter(np, internal_np::time_limit), 0.));
   Tetrahedral_soup_3<Point> result;
   internal::deserialize_soup(bytes, result);
   if(result.tetrahedra.empty()) throw Input_error(source, 0, "TetGen produced no tetrahedra");

@@ -9,6 +9,7 @@
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/internal/cad/acute_curve_grading.h>
 #include <CGAL/Hexahedral_remeshing/internal/isolated_call.h>
+#include <CGAL/Hexahedral_remeshing/internal/wall_thickness.h>
 #include <CGAL/Hexahedral_remeshing/tetrahedralize_surface.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -16,6 +17,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -272,6 +274,104 @@ void extract(const std::string& source, Tetrahedral_soup_3<Point>& soup)
   soup.corners = select_corners(soup, corner_candidates);
 }
 
+// Opens a CAD part in gmsh (in the child process) and checks that it is one or more separate solids;
+// returns the diagonal of its bounding box.
+inline double open_cad_part(const std::string& filename)
+{
+  internal_gmsh::start();
+  internal_gmsh::call(filename, "read the CAD file", [&] { gmsh::open(filename); });
+  std::vector<std::pair<int, int> > volumes, surfaces;
+  gmsh::model::getEntities(volumes, 3);
+  gmsh::model::getEntities(surfaces, 2);
+  if(volumes.empty())
+    throw Input_error(filename, 0, "the CAD file has no solid (" + std::to_string(surfaces.size()) +
+                      " surfaces, no volume): export the part as a solid (closed shells sewn into a volume) and retry");
+  if(volumes.size() > 1) {
+    // Solids meshed one by one would overlap or touch without sharing nodes: the boolean
+    // fragments of the solids tell whether they intersect (more pieces, or a shared face).
+    std::vector<std::pair<int, int> > pieces, tools(volumes.begin() + 1, volumes.end());
+    std::vector<std::vector<std::pair<int, int> > > map;
+    internal_gmsh::call(filename, "intersect the solids of the part", [&] {
+      gmsh::model::occ::fragment({volumes.front()}, tools, pieces, map);
+      gmsh::model::occ::synchronize();
+    });
+    std::vector<std::pair<int, int> > after, faces;
+    gmsh::model::getEntities(after, 3);
+    gmsh::model::getEntities(faces, 2);
+    std::size_t shared = 0;
+    for(const auto& f : faces) {
+      std::vector<int> up, down;
+      gmsh::model::getAdjacencies(2, f.second, up, down);
+      shared += up.size() > 1;
+    }
+    if(after.size() != volumes.size() || shared > 0)
+      throw Input_error(filename, 0, "the part has " + std::to_string(volumes.size()) + " solids that touch or "
+                        "overlap (" + std::to_string(shared) + " shared faces after intersecting them); each body "
+                        "must be one solid: fuse them in the CAD tool (boolean union) or separate them, and retry");
+  }
+  double xmin = 0, ymin = 0, zmin = 0, xmax = 0, ymax = 0, zmax = 0;
+  gmsh::model::getBoundingBox(-1, -1, xmin, ymin, zmin, xmax, ymax, zmax);
+  const double diagonal = std::sqrt((xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin) +
+                                    (zmax - zmin) * (zmax - zmin));
+  if(!(diagonal > 0) || !std::isfinite(diagonal))
+    throw Input_error(filename, 0, "the part has an empty or infinite bounding box");
+  return diagonal;
+}
+
+// The wall thickness of a part from its surface triangles (gmsh's, of any orientation), oriented to
+// bound a volume first; a surface that cannot be oriented gives no measure (infinite thickness).
+template <class Point>
+internal::Wall_thickness surface_wall_thickness(const Tetrahedral_soup_3<Point>& soup)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef internal::Checked_surface SM;
+  try {
+    std::vector<internal::Surface_kernel::Point_3> points;
+    for(const Point& p : soup.points)
+      points.emplace_back(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]));
+    std::vector<std::vector<std::size_t> > polygons;
+    for(const auto& t : soup.triangles) polygons.push_back({t[0], t[1], t[2]});
+    PMP::repair_polygon_soup(points, polygons);
+    if(polygons.empty() || !PMP::orient_polygon_soup(points, polygons)) return internal::Wall_thickness();
+    SM sm;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+    if(!CGAL::is_closed(sm) || !CGAL::is_triangle_mesh(sm)) return internal::Wall_thickness();
+    PMP::orient_to_bound_a_volume(sm);
+    std::vector<internal::Surface_kernel::Point_3> vertex_points;
+    std::map<SM::Vertex_index, std::uint32_t> index;
+    for(SM::Vertex_index v : sm.vertices()) {
+      index[v] = std::uint32_t(vertex_points.size());
+      vertex_points.push_back(sm.point(v));
+    }
+    std::vector<std::array<std::uint32_t, 3> > triangles;
+    for(SM::Face_index f : sm.faces()) {
+      std::array<std::uint32_t, 3> t;
+      int k = 0;
+      for(SM::Vertex_index v : vertices_around_face(sm.halfedge(f), sm)) t[std::size_t(k++)] = index[v];
+      triangles.push_back(t);
+    }
+    return internal::wall_thickness(vertex_points, triangles);
+  } catch(...) {
+    return internal::Wall_thickness();
+  }
+}
+
+// The mesh size, over the part's wall thickness, above which read_CAD() refuses to tetrahedralize.
+constexpr double maximum_mesh_size_over_wall_thickness = 8;
+
+// Where the part is thinner than the tetrahedra can follow (a wall `ratio` times thinner than the mesh
+// size `h`): gmsh would run for minutes and fill memory with slivers.
+inline std::string thin_wall_message(const internal::Wall_thickness& w, double h)
+{
+  std::ostringstream os;
+  os.precision(3);
+  os << "the part's walls are " << w.thickness << " thick (near " << w.where() << "; half of its surface is "
+     << "closer than that to the opposite side), " << h / w.thickness << " times thinner than the tetrahedra "
+     << "(mesh size " << h << "): tetrahedralize with a mesh size of at most " << w.thickness
+     << " (named parameter mesh_size; hexmesh --mesh-size, or --target-edge-length for the hexahedra), or thicken the walls";
+  return os.str();
+}
+
 } // namespace internal_gmsh
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -330,11 +430,17 @@ void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{time_limit}
+///     \cgalParamDescription{seconds after which gmsh is stopped with an `Input_error`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0 (no limit)}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Input_error naming the file and the problem: unreadable file (gmsh's message), a part
 ///         without any solid (only surfaces or curves), solids that touch or overlap (an
 ///         assembly: each body must be one solid), a meshing failure, a non-positive
-///         `mesh_size`.
+///         `mesh_size`, walls more than 8 times thinner than `mesh_size` over half of the surface
+///         (gmsh would take minutes; the message names the thickness), the time limit reached.
 template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
               const NamedParameters& np = CGAL::parameters::default_values())
@@ -347,46 +453,24 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
     throw Input_error(filename, 0, "the mesh size must be a positive number");
   internal_gmsh::check_readable(filename);
   const std::string bytes = internal::run_isolated([&]() -> std::string {
-    internal_gmsh::start();
-    internal_gmsh::call(filename, "read the CAD file", [&] { gmsh::open(filename); });
-    std::vector<std::pair<int, int> > volumes, surfaces;
-    gmsh::model::getEntities(volumes, 3);
-    gmsh::model::getEntities(surfaces, 2);
-    if(volumes.empty())
-      throw Input_error(filename, 0, "the CAD file has no solid (" + std::to_string(surfaces.size()) +
-                        " surfaces, no volume): export the part as a solid (closed shells sewn into a volume) and retry");
-    if(volumes.size() > 1) {
-      // Solids meshed one by one would overlap or touch without sharing nodes: the boolean
-      // fragments of the solids tell whether they intersect (more pieces, or a shared face).
-      std::vector<std::pair<int, int> > pieces, tools(volumes.begin() + 1, volumes.end());
-      std::vector<std::vector<std::pair<int, int> > > map;
-      internal_gmsh::call(filename, "intersect the solids of the part", [&] {
-        gmsh::model::occ::fragment({volumes.front()}, tools, pieces, map);
-        gmsh::model::occ::synchronize();
-      });
-      std::vector<std::pair<int, int> > after, faces;
-      gmsh::model::getEntities(after, 3);
-      gmsh::model::getEntities(faces, 2);
-      std::size_t shared = 0;
-      for(const auto& f : faces) {
-        std::vector<int> up, down;
-        gmsh::model::getAdjacencies(2, f.second, up, down);
-        shared += up.size() > 1;
-      }
-      if(after.size() != volumes.size() || shared > 0)
-        throw Input_error(filename, 0, "the part has " + std::to_string(volumes.size()) + " solids that touch or "
-                          "overlap (" + std::to_string(shared) + " shared faces after intersecting them); each body "
-                          "must be one solid: fuse them in the CAD tool (boolean union) or separate them, and retry");
-    }
-    double xmin = 0, ymin = 0, zmin = 0, xmax = 0, ymax = 0, zmax = 0;
-    gmsh::model::getBoundingBox(-1, -1, xmin, ymin, zmin, xmax, ymax, zmax);
-    const double diagonal = std::sqrt((xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin) +
-                                      (zmax - zmin) * (zmax - zmin));
-    if(!(diagonal > 0) || !std::isfinite(diagonal))
-      throw Input_error(filename, 0, "the part has an empty or infinite bounding box");
+    const double diagonal = internal_gmsh::open_cad_part(filename);
     const double h = size > 0 ? size : diagonal / 20;
     gmsh::option::setNumber("Mesh.MeshSizeMax", h);
     gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    try {
+      gmsh::model::mesh::generate(2);
+    } catch(...) {
+      throw Input_error(filename, 0, internal_gmsh::mesher_failure(filename, diagonal, h));
+    }
+    {
+      // walls much thinner than the tetrahedra: the 3D mesher would run for minutes (a 20 x 20 x 0.02
+      // plate at the default size: no result after 400 s, 2 GB) for slivers no map can use
+      Tetrahedral_soup_3<Point> surface;
+      internal_gmsh::extract(filename, surface);
+      const internal::Wall_thickness w = internal_gmsh::surface_wall_thickness(surface);
+      if(w.thickness < h / internal_gmsh::maximum_mesh_size_over_wall_thickness)
+        throw Input_error(filename, 0, internal_gmsh::thin_wall_message(w, h));
+    }
     try {
       gmsh::model::mesh::generate(3);
     } catch(...) {
@@ -411,15 +495,67 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
                           internal_gmsh::last_error("no message") + "); try another --mesh-size");
     }
     return internal::serialize_soup(result);
-  }, filename, "gmsh");
+  }, filename, "gmsh", choose_parameter(get_parameter(np, internal_np::time_limit), 0.));
   soup = Tetrahedral_soup_3<Point>();
   internal::deserialize_soup(bytes, soup);
   soup.source = filename;
 }
 
+/// \ingroup PkgHexahedralRemeshingRef
+/// Measures of a CAD part, from a surface mesh only (quick: no tetrahedra).
+struct CAD_part_measures
+{
+  /// Diagonal of the bounding box (model units).
+  double diagonal = 0;
+  /// Volume of the solid.
+  double volume = 0;
+  /// The wall thickness of most of the part: the area-weighted median, over the boundary triangles,
+  /// of the distance along the inward normal to the other side (infinite if it could not be measured).
+  double wall_thickness = 0;
+  /// A point of the surface where the walls are about that thick.
+  std::array<double, 3> wall_location{ {0, 0, 0} };
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// Imports a CAD part as `read_CAD()` does and measures it on a surface mesh (size: the bounding-box
+/// diagonal over 20), without tetrahedralizing it: so that a size can be chosen, and a part whose
+/// walls are too thin for it refused, before the tetrahedralization (which, at a size much larger
+/// than a wall's thickness, takes minutes).
+/// `time_limit`: seconds after which gmsh is stopped (0: none).
+/// \throws Input_error as `read_CAD()`.
+inline CAD_part_measures measure_CAD_part(const std::string& filename, double time_limit = 0)
+{
+  internal_gmsh::check_readable(filename);
+  const std::string bytes = internal::run_isolated([&]() -> std::string {
+    const double diagonal = internal_gmsh::open_cad_part(filename);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", diagonal / 20);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+    try {
+      gmsh::model::mesh::generate(2);
+    } catch(...) {
+      throw Input_error(filename, 0, internal_gmsh::mesher_failure(filename, diagonal, diagonal / 20));
+    }
+    Tetrahedral_soup_3<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> surface;
+    internal_gmsh::extract(filename, surface);
+    const internal::Wall_thickness w = internal_gmsh::surface_wall_thickness(surface);
+    internal::Byte_writer out;
+    for(double x : {diagonal, w.volume, w.thickness, w.location[0], w.location[1], w.location[2]}) out.put(x);
+    return std::move(out.bytes());
+  }, filename, "gmsh", time_limit);
+  internal::Byte_reader in(bytes);
+  CAD_part_measures m;
+  m.diagonal = in.get<double>();
+  m.volume = std::abs(in.get<double>());
+  m.wall_thickness = in.get<double>();
+  for(double& x : m.wall_location) x = in.get<double>();
+  return m;
+}
+
 template <class Point, class NamedParameters>
 void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup, const NamedParameters& np)
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   internal_gmsh::check_readable(filename);
   const std::string bytes = internal::run_isolated([&]() -> std::string {
     internal_gmsh::start();
@@ -430,7 +566,7 @@ void read_gmsh(const std::string& filename, Tetrahedral_soup_3<Point>& soup, con
       throw Input_error(filename, 0, "the file has no tetrahedra and no triangles (" +
                         internal_gmsh::last_error("no element") + "); mesh the volume (gmsh -3) and retry");
     return internal::serialize_soup(result);
-  }, filename, "gmsh");
+  }, filename, "gmsh", choose_parameter(get_parameter(np, internal_np::time_limit), 0.));
   soup = Tetrahedral_soup_3<Point>();
   internal::deserialize_soup(bytes, soup);
   soup.source = filename;

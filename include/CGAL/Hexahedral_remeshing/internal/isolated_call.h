@@ -6,25 +6,46 @@
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
+#include <CGAL/Hexahedral_remeshing/parameters.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #if defined(__unix__) || defined(__APPLE__)
 #define CGAL_HEXAHEDRAL_REMESHING_HAS_FORK 1
+#include <chrono>
 #include <csignal>
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
 
 namespace CGAL {
 namespace Hexahedral_remeshing {
+
+namespace internal_np {
+enum time_limit_t { time_limit };
+} // namespace internal_np
+
+namespace parameters {
+#ifdef DOXYGEN_RUNNING
+/// The readers that run gmsh or TetGen (`read_CAD()`, `read_gmsh()`, `tetrahedralize_surface()`,
+/// `read_tetrahedral_mesh()`): seconds after which the child process running them is stopped and
+/// an `Input_error` says so (`double`, default 0: no limit).
+template <class T> unspecified_type time_limit(const T& value);
+#else
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(time_limit)
+#endif
+} // namespace parameters
+
 namespace internal {
 
 // Flat binary encoding of plain values and strings (native byte order: both ends are the same
@@ -144,10 +165,11 @@ void deserialize_soup(const std::string& bytes, Tetrahedral_soup_3<Point>& soup)
 // global state (gmsh) starts afresh on every call. `task` returns its result as bytes or throws;
 // an `Input_error` thrown by `task` is re-thrown here with the same source, line and problem (an
 // `Unsupported_input` stays one), any other exception becomes an `Input_error` with its message.
-// A child killed by a signal becomes an `Input_error` naming `what` and the signal.
-// Where fork() is not available, `task` runs in the calling process.
+// A child killed by a signal becomes an `Input_error` naming `what` and the signal. A child still
+// running after `time_limit` seconds (> 0) is killed, and an `Input_error` says so.
+// Where fork() is not available, `task` runs in the calling process (without a time limit).
 inline std::string run_isolated(const std::function<std::string()>& task, const std::string& source,
-                                const std::string& what)
+                                const std::string& what, double time_limit = 0)
 {
 #ifdef CGAL_HEXAHEDRAL_REMESHING_HAS_FORK
   int fds[2];
@@ -191,7 +213,25 @@ inline std::string run_isolated(const std::function<std::string()>& task, const 
   ::close(fds[1]);
   std::string bytes;
   char buffer[1 << 16];
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(time_limit > 0 ? time_limit : 0.);
   while(true) {
+    if(time_limit > 0) {
+      const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+      pollfd p{fds[0], POLLIN, 0};
+      const int ready = left > 0 ? ::poll(&p, 1, int((std::min)(left * 1000. + 1, 2.0e9))) : 0;
+      if(ready < 0 && errno == EINTR) continue;
+      if(ready == 0) {
+        ::kill(pid, SIGKILL);
+        int ignored = 0;
+        while(::waitpid(pid, &ignored, 0) < 0 && errno == EINTR) {}
+        ::close(fds[0]);
+        std::ostringstream limit;
+        limit << time_limit;
+        throw Input_error(source, 0, what + " did not finish within the time limit of " + limit.str() +
+                          " s and was stopped: the input is too large or too fine for it at this size (or makes it loop); "
+                          "coarsen it, or raise the limit (named parameter time_limit; hexmesh --time-limit)");
+      }
+    }
     const ssize_t k = ::read(fds[0], buffer, sizeof(buffer));
     if(k < 0 && errno == EINTR) continue;
     if(k <= 0) break;

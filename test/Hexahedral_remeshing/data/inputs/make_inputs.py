@@ -144,6 +144,12 @@ def volumes():
         f.write("CELL_DATA %d\nFIELD FieldData 1\ngmsh:geometrical 1 %d int\n%s\n" %
                 (len(cells), len(cells), " ".join(["1"] * 6 + ["7", "7", "3"])))
         f.write("METADATA\nINFORMATION 0\n\n")
+    # the same, but each METADATA block followed directly by the next section (no empty line), as
+    # some writers do
+    text = open(path("cube_v51.vtk")).read()
+    text = text.replace("DATA 2 0 1.73205\n\nCELLS", "DATA 2 0 1.73205\nCELLS").replace("INFORMATION 0\n\n", "INFORMATION 0\n")
+    with open(path("cube_v51_metadata_no_blank_line.vtk"), "w") as f:
+        f.write(text)
     # second-order tetrahedra (VTK type 24): corners then edge midpoints
     qp = list(pts)
     mid = {}
@@ -215,6 +221,52 @@ def sphere_tangent_to_a_face(gmsh):
     gmsh.write(path("sphere_tangent.step"))
 
 
-surfaces()
-volumes()
-gmsh_files()
+def cad_parts():
+    # CAD parts of the solver-format, thin-wall and feature-coverage tests (gmsh's OpenCASCADE kernel)
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    # a 1 x 2 x 3 box: six planar CAD faces, the boundary groups of a hex mesh of it
+    gmsh.model.add("box")
+    gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("box_1x2x3.step"))
+    # a 2 x 2 x 0.03 plate: with 400 hexahedra (edge 0.067) no layer fits in its thickness; at edge 0.03
+    # one layer of about 4400 hexahedra
+    gmsh.model.add("thin_plate")
+    gmsh.model.occ.addBox(0, 0, 0, 2, 2, 0.03)
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("thin_plate.step"))
+    # the plate of the field report, 20 x 20 x 0.02: gmsh takes some 10 s at mesh size 0.15 (the time
+    # limit test) and minutes at its default size
+    gmsh.model.add("large_thin_plate")
+    gmsh.model.occ.addBox(0, 0, 0, 20, 20, 0.02)
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("thin_plate_20x20.step"))
+    # a cylinder with a rounded top (a fillet of radius 0.2 on its top circle): one curved sharp edge,
+    # the bottom circle
+    gmsh.model.add("rounded_cylinder")
+    gmsh.model.occ.addCylinder(0, 0, 0, 0, 0, 1, 0.5, 1)
+    gmsh.model.occ.synchronize()
+    top = [c for _, c in gmsh.model.getEntities(1)
+           if abs(gmsh.model.occ.getCenterOfMass(1, c)[2] - 1) < 1e-9]
+    gmsh.model.occ.fillet([1], top, [0.2])
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("rounded_cylinder.step"))
+    # a stepped shaft with a keyway: two coaxial cylinders and a slot cut along the thick one
+    gmsh.model.add("stepped_shaft")
+    gmsh.model.occ.addCylinder(0, 0, 0, 0, 0, 1.2, 0.5, 1)
+    gmsh.model.occ.addCylinder(0, 0, 1.2, 0, 0, 0.8, 0.3, 2)
+    gmsh.model.occ.fuse([(3, 1)], [(3, 2)], 3)
+    gmsh.model.occ.addBox(-0.1, 0.35, 0.2, 0.2, 0.3, 0.8, 4)
+    gmsh.model.occ.cut([(3, 3)], [(3, 4)], 5)
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("stepped_shaft.step"))
+    gmsh.finalize()
+
+
+if __name__ == "__main__":
+    surfaces()
+    volumes()
+    gmsh_files()
+    cad_parts()

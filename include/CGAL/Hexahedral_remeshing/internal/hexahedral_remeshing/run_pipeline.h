@@ -8,6 +8,7 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_remeshing_result.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/feature_fidelity.h>
+#include <CGAL/Hexahedral_remeshing/internal/wall_thickness.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -99,6 +100,19 @@ inline void name_failed_stage(Hexahedral_remeshing_result& r)
   }
 }
 
+// The wall thickness of the solid of a tetrahedral mesh (its boundary triangles are oriented outward).
+template <class Traits>
+Wall_thickness tetrahedral_mesh_wall_thickness(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  std::vector<std::array<std::uint32_t, 3> > triangles;
+  triangles.reserve(mesh.number_of_boundary_triangles());
+  for(std::size_t b = 0; b < mesh.number_of_boundary_triangles(); ++b) {
+    const auto& t = mesh.boundary_triangle_vertices(typename Tetrahedral_mesh_3<Traits>::Index(b));
+    triangles.push_back({ {std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])} });
+  }
+  return wall_thickness(mesh.points(), triangles);
+}
+
 // The paper's pipeline on a tetrahedral mesh: frame field (valences, constraints, field, matchings,
 // realignment) -> integer-grid map -> extraction -> untangling and smoothing -> check. Data flows forward:
 // each stage reads only the outputs of the stages before it.
@@ -118,6 +132,13 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
   Hexahedral_remeshing_result r;
   hexes.clear();
   r.tetrahedra = mesh.number_of_tetrahedra();
+  {
+    // walls thinner than half a hexahedron round to no layer: refused before the work starts
+    const double h = pipeline_hex_edge_length(mesh, np);
+    const Wall_thickness w = tetrahedral_mesh_wall_thickness(mesh);
+    if(w.thickness < minimum_wall_thickness_over_hex_edge * h)
+      throw Input_error(mesh.source(), 0, thin_wall_for_hexahedra_message(w.thickness, w.where(), h, tetrahedral_mesh_volume(mesh)));
+  }
   // the band that keeps singular curves off acute edges of valence 1: two hexahedra wide unless given
   double band = choose_parameter(get_parameter(np, internal_np::acute_edge_band_radius), -1.);
   if(band < 0) band = 2 * pipeline_hex_edge_length(mesh, np);
@@ -188,6 +209,9 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
     r.relative_hausdorff_distance = r.smoothing.after.hausdorff_distance / diagonal;
   const double volume = tetrahedral_mesh_volume(mesh);
   r.volume_ratio = volume > 0 ? r.check.total_volume / volume : 0.;
+  // the groups a solver puts its loads on, read from the final positions
+  r.boundary_groups = compute_hexahedral_boundary_groups(
+    hexes, mesh, choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.));
   r.check_seconds = seconds_since(t);
   visitor.end_stage("check", r.check_seconds);
 
