@@ -17,6 +17,8 @@
 #include <CGAL/Hexahedral_remeshing/IO/read_hexahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_boundary_groups.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_orientation.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/text_tokenizer.h>
@@ -73,6 +75,13 @@ inline void add_smoothing_quality(Json& json, const std::string& key, const CGAL
       .end();
 }
 
+inline double bounding_box_diagonal(const std::vector<CGAL::Hexahedral_remeshing::Hexahedral_mesh_3::Point_3>& points)
+{
+  if(points.empty()) return 0;
+  const CGAL::Bbox_3 b = CGAL::bbox_3(points.begin(), points.end());
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+}
+
 inline int command_smooth(const Arguments& args)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
@@ -82,15 +91,20 @@ inline int command_smooth(const Arguments& args)
   const std::string reference_file = args.value("reference");
   const bool quiet = args.has("quiet");
   const int iterations = args.integer("iterations", 10, 0, 1000000);
-  const std::string out = hex_output_option(args, "smooth");
+  const std::vector<std::string> outs = hex_output_options(args, "smooth");
+  const std::string& out = outs.front();
   Output_files outputs;
-  outputs.add(out);
+  for(const std::string& o : outs) outputs.add(o);
   if(args.has("json")) outputs.add(args.value("json"));
 
   Progress progress(quiet);
   progress.start("reading " + in);
   HR::Hexahedral_mesh_3 hexes;
   HR::IO::read_hexahedral_mesh(in, hexes);
+  // a hex mesh from another tool may list its vertices in the mirrored order, or mix both: oriented
+  // here (degenerate hexahedra and faces that do not pair up are refused)
+  const HR::Hexahedral_orientation_result orientation = HR::orient_hexahedral_mesh(hexes, in);
+  const HR::Hexahedral_mesh_check input_check = HR::check_hexahedral_mesh(hexes);
   progress.finish();
   progress.start("reading " + reference_file);
   const HR::Hexahedral_smoothing_reference reference = read_smoothing_reference(reference_file);
@@ -108,10 +122,26 @@ inline int command_smooth(const Arguments& args)
   progress.finish();
   progress.start("checking the hex mesh");
   const HR::Hexahedral_mesh_check check = HR::check_hexahedral_mesh(hexes);
+  // never an output worse than the input with exit 0: lower minimum scaled Jacobian, more inverted
+  // hexahedra, a boundary farther from the reference
+  std::string worse;
+  if(check.min_scaled_jacobian < input_check.min_scaled_jacobian - 1e-9)
+    worse = "its minimum scaled Jacobian would drop from " + std::to_string(input_check.min_scaled_jacobian) + " to " +
+            std::to_string(check.min_scaled_jacobian);
+  else if(check.inverted_hexahedra > input_check.inverted_hexahedra)
+    worse = std::to_string(check.inverted_hexahedra) + " hexahedra would be inverted (" +
+            std::to_string(input_check.inverted_hexahedra) + " in the input)";
+  else if(r.before.hausdorff_distance >= 0 &&
+          r.after.hausdorff_distance > 1.5 * r.before.hausdorff_distance + 1e-3 * bounding_box_diagonal(hexes.points))
+    worse = "its boundary would move away from the reference (Hausdorff distance " +
+            std::to_string(r.before.hausdorff_distance) + " -> " + std::to_string(r.after.hausdorff_distance) + ")";
+  if(!worse.empty()) throw Stage_error(in + ": the smoothing cannot improve this hex mesh: " + worse + "; nothing written");
+  // the boundary groups from the reference's patches (regions between its sharp edges)
+  HR::compute_hexahedral_boundary_groups(hexes, reference);
   progress.finish();
 
   progress.start("writing the outputs");
-  outputs.write({out}, [&] { HR::IO::write_hexahedral_mesh(out, hexes); });
+  for(const std::string& o : outs) outputs.write({o}, [&] { HR::IO::write_hexahedral_mesh(o, hexes); });
   if(args.has("json")) {
     Json json;
     json.begin().value("input", in).value("reference", reference_file).value("output", out);
@@ -128,6 +158,7 @@ inline int command_smooth(const Arguments& args)
         .value("curve_vertices", r.curve_vertices)
         .value("fixed_vertices", r.fixed_vertices)
         .value("detected_feature_polylines", r.detected_feature_polylines)
+        .value("reoriented_hexahedra", orientation.reoriented)
         .value("seconds", r.seconds)
         .end();
     add_smoothing_quality(json, "before", r.before);
@@ -152,6 +183,10 @@ inline int command_smooth(const Arguments& args)
     std::cout << in << ": " << hexes.number_of_hexahedra() << " hexahedra, " << hexes.number_of_vertices()
               << " vertices (" << r.interior_vertices << " interior, " << r.surface_vertices << " on the surface, "
               << r.curve_vertices << " on feature curves, " << r.fixed_vertices << " fixed)\n"
+              << (orientation.reoriented == 0 ? std::string()
+                  : "  orientation         " + std::to_string(orientation.reoriented) + " hexahedra re-oriented (" +
+                      (orientation.mirrored_components == orientation.components ? std::string("written in the mirrored vertex order")
+                                                                                 : std::string("mixed orientations")) + ")\n")
               << line("before              ", r.before) << line("after               ", r.after)
               << "  smoothing           " << r.rounds << " sweeps, " << r.vertex_moves << " vertex moves"
               << (r.untangling_run ? std::string(", untangling ") + (r.global_untangling_run ? "local + global" : "local") : std::string())

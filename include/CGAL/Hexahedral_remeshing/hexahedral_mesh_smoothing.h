@@ -257,6 +257,8 @@ inline void project_on_reference(std::vector<Hexahedral_mesh_3::Point_3>& points
     if(constraints[v].kind == Hex_vertex_kind::SURFACE) points[v] = reference.closest_on_surface(points[v], nullptr, constraints[v].patch);
     else if(constraints[v].kind == Hex_vertex_kind::CURVE)
       points[v] = reference.closest_on_polyline(constraints[v].polyline, points[v]);
+    else if(constraints[v].kind == Hex_vertex_kind::FIXED && constraints[v].corner < reference.corners().size())
+      points[v] = reference.corners()[constraints[v].corner];
   }
 }
 

@@ -164,6 +164,19 @@ public:
     return best;
   }
 
+  // Index of the nearest corner (and its distance), or corners().size() if there is none.
+  std::size_t nearest_corner(const Point_3& p, double* distance = nullptr) const
+  {
+    std::size_t best = m_corners.size();
+    double bd = (std::numeric_limits<double>::max)();
+    for(std::size_t c = 0; c < m_corners.size(); ++c) {
+      const double d = std::sqrt(CGAL::squared_distance(p, m_corners[c]));
+      if(d < bd) { bd = d; best = c; }
+    }
+    if(distance != nullptr) *distance = bd;
+    return best;
+  }
+
   // Distance to the nearest corner (max double if there is none).
   double distance_to_corners(const Point_3& p) const
   {

@@ -33,7 +33,37 @@ struct Hex_vertex_constraint
   std::size_t polyline = 0; // for CURVE
   int patch = -1;           // for SURFACE: the reference patch it stays on (-1: the whole surface)
   bool on_boundary = false; // topologically on the hex boundary or tagged BOUNDARY
+  // for FIXED: the reference corner the vertex is put on first (a corner found from the patches of
+  // its quads, which may lie off it), or none
+  std::size_t corner = (std::numeric_limits<std::size_t>::max)();
 };
+
+// The reference patches meeting at each vertex of the hex boundary: each boundary quad takes the patch
+// most of five points inside it (its centre, and halfway from the centre to each corner) are closest
+// to. Inside the quads, the vote holds when the vertices lie off the sharp edges (a noisy mesh): one
+// patch at a vertex means the surface, two a feature curve, three or more a corner.
+inline std::vector<std::vector<int> > vertex_patches_from_quads(const Hexahedral_mesh_3& mesh,
+                                                                const std::vector<std::array<std::uint32_t, 4> >& quads,
+                                                                const Reference_projector& reference)
+{
+  std::vector<std::vector<int> > patches(mesh.number_of_vertices());
+  for(const auto& q : quads) {
+    double c[3] = {0, 0, 0};
+    for(auto v : q)
+      for(int d = 0; d < 3; ++d) c[d] += mesh.points[v][d] / 4;
+    const Hexahedral_mesh_3::Point_3 centre(c[0], c[1], c[2]);
+    std::vector<int> votes{ reference.patch_of(centre) };
+    for(auto v : q) votes.push_back(reference.patch_of(CGAL::midpoint(centre, mesh.points[v])));
+    int best = votes[0], best_count = 0;
+    for(int p : votes) {
+      const int k = int(std::count(votes.begin(), votes.end(), p));
+      if(k > best_count) { best = p; best_count = k; }
+    }
+    for(auto v : q)
+      if(std::find(patches[v].begin(), patches[v].end(), best) == patches[v].end()) patches[v].push_back(best);
+  }
+  return patches;
+}
 
 // Which vertex lies on what. With `mesh.vertex_tags` (full size, not all 0): CORNER -> FIXED, FEATURE_CURVE ->
 // CURVE on the nearest polyline, BOUNDARY -> SURFACE (or CURVE / FIXED if it lies on a polyline /
@@ -60,6 +90,17 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
         shortest[h[e[0]]] = (std::min)(shortest[h[e[0]]], l);
         shortest[h[e[1]]] = (std::min)(shortest[h[e[1]]], l);
       }
+  std::vector<double> mean_edge(n, 0.);
+  std::vector<int> edge_count(n, 0);
+  for(const auto& h : mesh.hexahedra)
+    for(const auto& e : hex_edges()) {
+      const double l = std::sqrt(CGAL::squared_distance(mesh.points[h[e[0]]], mesh.points[h[e[1]]]));
+      for(int i = 0; i < 2; ++i) { mean_edge[h[e[i]]] += l; ++edge_count[h[e[i]]]; }
+    }
+  for(std::size_t v = 0; v < n; ++v) if(edge_count[v] > 0) mean_edge[v] /= edge_count[v];
+  const std::vector<std::vector<int> > by_patches =
+    !tagged && reference.number_of_patches() > 1 ? vertex_patches_from_quads(mesh, boundary_quads, reference)
+                                                 : std::vector<std::vector<int> >();
   for(std::size_t v = 0; v < n; ++v) {
     Hex_vertex_constraint& cv = c[v];
     const auto& p = mesh.points[v];
@@ -82,6 +123,19 @@ classify_hex_vertices(const Hexahedral_mesh_3& mesh, const std::vector<std::arra
         double d;
         reference.nearest_polyline(p, &d);
         curve = d <= tol;
+      }
+    }
+    // untagged vertices off the features (a noisy mesh): the patches of their quads decide, within
+    // half an incident edge of the curve or corner
+    if(!tagged && cv.on_boundary && !corner && !curve && !by_patches.empty()) {
+      const std::size_t k = by_patches[v].size();
+      double d = 0;
+      if(k >= 3 && reference.nearest_corner(p, &d) < reference.corners().size() && d <= 0.5 * mean_edge[v]) {
+        corner = true;
+        cv.corner = reference.nearest_corner(p);
+      } else if(k == 2 && reference.number_of_polylines() > 0) {
+        reference.nearest_polyline(p, &d);
+        curve = d <= 0.5 * mean_edge[v];
       }
     }
     if(!cv.on_boundary) cv.kind = Hex_vertex_kind::INTERIOR;
