@@ -339,5 +339,131 @@ expect_error 3 "does_not_exist.mesh" smooth "$tmp/does_not_exist.mesh" --referen
 expect_error 5 "cannot open file for writing" smooth "$tmp/tangled.mesh" --reference "$data/cube.off" --out "$tmp/x/a.mesh" --json "$tmp/no_dir/a.json"
 [ -z "$(ls -A "$tmp/x")" ] || fail "failed smooth runs left files behind: $(ls "$tmp/x")"
 
+# Solver formats (issue 28): one run, the hex mesh written as .inp, .msh, .vtu and .mesh; each read back by
+# another reader (an independent .inp parser, gmsh's Python module, an XML parser): same nodes and
+# hexahedra, positive C3D8 volumes, one surface per CAD face of the box covering the boundary once, each
+# planar with the face's area
+py=/usr/bin/python3; [ -x "$py" ] || py=python3
+"$hexmesh" remesh "$inputs/box_1x2x3.step" --hexahedra 200 --out "$tmp/box.inp" --out "$tmp/box.msh" --out "$tmp/box.vtu" \
+  --out "$tmp/box.mesh" --json "$tmp/box.json" > "$tmp/out" 2> "$tmp/err" || fail "remesh to solver formats: $(tail -1 "$tmp/err")"
+"$py" "$root/test/Hexahedral_remeshing/check_solver_formats.py" --inp "$tmp/box.inp" --msh "$tmp/box.msh" --vtu "$tmp/box.vtu" \
+  --step "$inputs/box_1x2x3.step" --planar > "$tmp/formats" || fail "solver formats: $(cat "$tmp/formats")"
+grep -q "boundary groups     6 surface patches" "$tmp/out" || fail "remesh summary lacks the boundary groups: $(cat "$tmp/out")"
+grep -q '"patches": 6' "$tmp/box.json" || fail "remesh JSON boundary_groups: $(grep -A5 boundary_groups "$tmp/box.json")"
+grep -q "^Quadrilaterals" "$tmp/box.mesh" || fail "MEDIT output lacks the boundary Quadrilaterals"
+"$hexmesh" remesh "$inputs/box_1x2x3.step" --hexahedra 200 --out "$tmp/box.obj" > /dev/null 2> "$tmp/err"
+[ $? -eq 2 ] && grep -q ".inp (Abaqus, CalculiX) or .msh" "$tmp/err" || fail "unknown hex extension: $(cat "$tmp/err")"
+
+# Thin walls (issue 29): a 2 x 2 x 0.03 plate with 400 hexahedra (edge 0.067) is refused within seconds
+# with its thickness and a size that fits; at that size it gives one layer of hexahedra
+start=$(date +%s)
+expect_error 3 "the part's walls are 0.03 thick" remesh "$inputs/thin_plate.step" --hexahedra 400 --out "$tmp/plate.mesh"
+grep -q -- "--target-edge-length 0.03" "$tmp/err" || fail "thin plate: no size that fits: $(cat "$tmp/err")"
+[ $(( $(date +%s) - start )) -le 20 ] || fail "thin plate: the refusal took $(( $(date +%s) - start )) s"
+[ ! -e "$tmp/plate.mesh" ] || fail "thin plate: an output was written"
+"$hexmesh" remesh "$inputs/thin_plate.step" --target-edge-length 0.03 --out "$tmp/plate.mesh" --quiet > /dev/null 2> "$tmp/err" \
+  || fail "thin plate at the size that fits: $(tail -1 "$tmp/err")"
+python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/plate.mesh" > "$tmp/check" || fail "thin plate: $(cat "$tmp/check")"
+python3 - "$tmp/plate.mesh" <<'PY' || fail "thin plate: not one layer of hexahedra"
+import sys
+tok = open(sys.argv[1]).read().split()
+i = tok.index('Vertices'); n = int(tok[i + 1])
+z = [float(tok[i + 4 + 4 * k]) for k in range(n)]
+sys.exit(0 if all(abs(v) < 1e-9 or abs(v - 0.03) < 1e-9 for v in z) else 1)
+PY
+
+# Curved sharp edges (issue 29): the feature coverage of the report agrees with an independent measure
+# from the CAD curves and the hex edges (a cylinder with a rounded top; a stepped shaft with a keyway)
+for part in rounded_cylinder stepped_shaft; do
+  "$hexmesh" remesh "$inputs/$part.step" --out "$tmp/$part.mesh" --json "$tmp/$part.json" --quiet > /dev/null 2> "$tmp/err" \
+    || fail "$part: $(tail -1 "$tmp/err")"
+  "$py" "$root/test/Hexahedral_remeshing/check_feature_coverage.py" "$tmp/$part.mesh" "$inputs/$part.step" "$tmp/$part.json" \
+    > "$tmp/coverage" || fail "$part feature coverage: $(cat "$tmp/coverage")"
+done
+
+# smooth trusts no hex mesh (issue 29): a grid written in the mirrored vertex order, one with every other
+# hexahedron mirrored (re-oriented, said so, every hexahedron positive, same vertices), a degenerate
+# hexahedron (refused with its index); a noisy L-block against a plain tet mesh of the L: its sharp
+# edges found, the corners of the concave edge back on their place
+"$py" - "$tmp" <<'PY'
+import random, sys
+tmp = sys.argv[1]
+def write(name, P, H):
+    with open(tmp + '/' + name, 'w') as f:
+        f.write('MeshVersionFormatted 1\nDimension 3\nVertices\n%d\n' % len(P))
+        for p in P: f.write('%.17g %.17g %.17g 0\n' % tuple(p))
+        f.write('Hexahedra\n%d\n' % len(H))
+        for h in H: f.write(' '.join(str(x + 1) for x in h) + ' 1\n')
+        f.write('End\n')
+C = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+def grid(cells, n, m, scale):
+    ids, P, H = {}, [], []
+    def v(i, j, k):
+        if (i, j, k) not in ids: ids[(i, j, k)] = len(P); P.append([i * scale, j * scale, k * scale])
+        return ids[(i, j, k)]
+    for k in range(m):
+        for j in range(n):
+            for i in range(n):
+                if cells(i, j): H.append([v(i + a, j + b, k + c) for a, b, c in C])
+    return ids, P, H
+mirror = lambda h: [h[0], h[3], h[2], h[1], h[4], h[7], h[6], h[5]]
+_, P, H = grid(lambda i, j: True, 3, 3, 1 / 3)
+write('grid_mirrored.mesh', P, [mirror(h) for h in H])
+write('grid_mixed.mesh', P, [mirror(h) if q % 2 else h for q, h in enumerate(H)])
+D = [list(h) for h in H]; D[5][6] = D[5][2]
+write('grid_degenerate.mesh', P, D)
+# the L: [0,2]^2 without [1,2)^2, 0.5 high; hexahedra of 1/4 with every vertex moved by up to 1/16
+random.seed(7)
+ids, P, H = grid(lambda i, j: not (i >= 4 and j >= 4), 8, 2, 0.25)
+for p in P:
+    for d in range(3): p[d] += random.uniform(-1 / 16, 1 / 16)
+write('noisy_L.mesh', P, H)
+# the reference: tetrahedra of 1/8 (six per cube), a plain VTK file without tags
+ids, T = {}, []
+Q = []
+def w(i, j, k):
+    if (i, j, k) not in ids: ids[(i, j, k)] = len(Q); Q.append((i / 8, j / 8, k / 8))
+    return ids[(i, j, k)]
+for k in range(4):
+    for j in range(16):
+        for i in range(16):
+            if i >= 8 and j >= 8: continue
+            c = [w(i + a, j + b, k + e) for a, b, e in C]
+            for t in ((0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6)):
+                T.append([c[x] for x in t])
+with open(tmp + '/L_reference.vtk', 'w') as f:
+    f.write('# vtk DataFile Version 2.0\nL\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS %d double\n' % len(Q))
+    for q in Q: f.write('%.17g %.17g %.17g\n' % q)
+    f.write('CELLS %d %d\n' % (len(T), 5 * len(T)))
+    for t in T: f.write('4 %d %d %d %d\n' % tuple(t))
+    f.write('CELL_TYPES %d\n' % len(T) + '10\n' * len(T))
+PY
+for g in mirrored mixed; do
+  "$hexmesh" smooth "$tmp/grid_$g.mesh" --reference "$data/cube.off" --out "$tmp/grid_$g.out.mesh" > "$tmp/out" 2> "$tmp/err" \
+    || fail "smooth grid_$g: $(cat "$tmp/err")"
+  grep -q "hexahedra re-oriented" "$tmp/out" || fail "smooth grid_$g does not say it re-oriented: $(cat "$tmp/out")"
+  python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/grid_$g.out.mesh" > "$tmp/check" || fail "smooth grid_$g: $(cat "$tmp/check")"
+  grep -q "27 hexahedra" "$tmp/check" && [ "$(awk '/^Vertices/ {getline; print; exit}' "$tmp/grid_$g.out.mesh")" = 64 ] \
+    || fail "smooth grid_$g: not the same 27 hexahedra and 64 vertices"
+done
+grep -q "27 hexahedra re-oriented (written in the mirrored vertex order)" <("$hexmesh" smooth "$tmp/grid_mirrored.mesh" --reference "$data/cube.off" --out "$tmp/g.mesh" 2>&1) \
+  || fail "smooth: the mirrored grid is not said to be written in the mirrored order"
+expect_error 3 "hexahedron 5 lists vertex" smooth "$tmp/grid_degenerate.mesh" --reference "$data/cube.off" --out "$tmp/x/d.mesh"
+"$hexmesh" smooth "$tmp/noisy_L.mesh" --reference "$tmp/L_reference.vtk" --out "$tmp/L.mesh" --json "$tmp/L.json" > "$tmp/out" 2> "$tmp/err" \
+  || fail "smooth noisy L: $(cat "$tmp/err")"
+python3 - "$tmp/L.mesh" "$tmp/L.json" <<'PY' || fail "smooth noisy L: $(cat "$tmp/out")"
+import json, sys
+tok = open(sys.argv[1]).read().split()
+i = tok.index('Vertices'); n = int(tok[i + 1])
+P = [tuple(float(x) for x in tok[i + 2 + 4 * k:i + 5 + 4 * k]) for k in range(n)]
+r = json.load(open(sys.argv[2]))
+assert r['smoothing']['curve_vertices'] > 0 and r['smoothing']['fixed_vertices'] >= 12, r['smoothing']
+for corner in ((1, 1, 0), (1, 1, 0.5), (0, 0, 0), (2, 1, 0.5)):
+    d = min(max(abs(p[k] - corner[k]) for k in range(3)) for p in P)
+    assert d < 1e-9, (corner, d)
+assert r['after']['hausdorff_distance'] < 1e-9, r['after']
+PY
+python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/L.mesh" > "$tmp/check" || fail "smooth noisy L: $(cat "$tmp/check")"
+
 [ "$failures" -eq 0 ] && echo "all hexmesh CLI checks passed"
 exit "$failures"

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <gmsh.h>
 
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -261,6 +262,18 @@ TEST(Vtk, Version51OffsetsConnectivityMetadataAndFieldData)
   EXPECT_NEAR(volume(m), 1.0, 1e-12);
   const auto s = HR::compute_mesh_statistics(m);
   EXPECT_EQ(s.surface_patches, 1u); // gmsh:geometrical 7 on the two triangles
+  EXPECT_EQ(s.feature_edges, 1u);
+}
+
+// A METADATA block followed directly by the next section (no empty line) ends there: the file is the
+// same mesh as with the empty lines.
+TEST(Vtk, MetadataWithoutEmptyLineBeforeTheNextSection)
+{
+  const Mesh m = read(inputs + "cube_v51_metadata_no_blank_line.vtk", HR::parameters::split_multi_boundary_tetrahedra(false));
+  EXPECT_EQ(m.number_of_tetrahedra(), 6u);
+  EXPECT_NEAR(volume(m), 1.0, 1e-12);
+  const auto s = HR::compute_mesh_statistics(m);
+  EXPECT_EQ(s.surface_patches, 1u);
   EXPECT_EQ(s.feature_edges, 1u);
 }
 
@@ -548,6 +561,35 @@ TEST(Gmsh, CadErrors)
   const Mesh two = read(apart, HR::parameters::mesh_size(0.5));
   EXPECT_EQ(two.number_of_components(), 2u);
   EXPECT_NEAR(volume(two), 2.0, 1e-9);
+}
+
+// A part whose walls are much thinner than the tetrahedra is refused before the 3D mesher runs (which
+// takes minutes on such a plate), with the thickness and a size that fits; the measure of a box, from
+// its surface mesh: the area-weighted median distance across it is its smallest side.
+TEST(Gmsh, ThinWallsAreMeasuredAndRefusedQuickly)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::string e = error_of(inputs + "thin_plate.step", HR::parameters::mesh_size(0.5));
+  EXPECT_TRUE(contains(e, "the part's walls are 0.03 thick")) << e;
+  EXPECT_TRUE(contains(e, "a mesh size of at most 0.03")) << e;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.);
+  const HR::IO::CAD_part_measures box = HR::IO::measure_CAD_part(inputs + "box_1x2x3.step");
+  EXPECT_NEAR(box.volume, 6.0, 1e-9);
+  EXPECT_NEAR(box.wall_thickness, 1.0, 1e-9);
+  EXPECT_NEAR(box.diagonal, std::sqrt(14.0), 1e-9);
+  const HR::IO::CAD_part_measures plate = HR::IO::measure_CAD_part(inputs + "thin_plate.step");
+  EXPECT_NEAR(plate.wall_thickness, 0.03, 1e-9);
+  EXPECT_NEAR(plate.volume, 0.12, 1e-9);
+}
+
+// gmsh (here on a thin plate at a size it takes some 10 s for) is stopped at the time limit.
+TEST(Gmsh, ChildProcessStoppedAtTheTimeLimit)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::string e = error_of(inputs + "thin_plate_20x20.step", HR::parameters::mesh_size(0.15, HR::parameters::time_limit(1.0)));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(contains(e, "did not finish within the time limit of 1 s")) << e;
+  EXPECT_LT(seconds, 6.);
 }
 
 TEST(Gmsh, SilentAndSafeTwiceAndWithGmshInitializedByTheCaller)

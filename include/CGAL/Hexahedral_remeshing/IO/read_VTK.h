@@ -15,6 +15,7 @@
 #include <cstring>
 #include <algorithm>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -95,13 +96,20 @@ public:
     while(p < m_text.size() && is_space(m_text[p])) ++p;
     return m_text.compare(p, w.size(), w) == 0;
   }
-  // Skips a METADATA block: text lines up to an empty line.
+  // Skips a METADATA block: text lines up to an empty line, or up to the next section keyword
+  // (writers such as meshio and some VTK versions omit the empty line).
   void skip_metadata()
   {
+    static const std::set<std::string> sections = {
+      "POINTS", "CELLS", "CELL_TYPES", "OFFSETS", "CONNECTIVITY", "POINT_DATA", "CELL_DATA", "FIELD",
+      "SCALARS", "VECTORS", "NORMALS", "TENSORS", "LOOKUP_TABLE", "METADATA", "DATASET", "TEXTURE_COORDINATES"};
     rest_of_line();
     while(m_pos < m_text.size()) {
+      const std::size_t pos = m_pos, line = m_line;
       const std::string l = rest_of_line();
-      if(l.find_first_not_of(" \t\r") == std::string::npos) break;
+      const std::size_t b = l.find_first_not_of(" \t\r");
+      if(b == std::string::npos) break;
+      if(sections.count(l.substr(b, l.find_first_of(" \t", b) - b)) > 0) { m_pos = pos; m_line = line; break; }
     }
   }
 

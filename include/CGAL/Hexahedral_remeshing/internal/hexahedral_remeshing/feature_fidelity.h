@@ -24,18 +24,22 @@ namespace Hexahedral_remeshing {
 namespace internal {
 
 // How faithful a hex mesh is to the sharp edges of its input: the sharp edges are the boundary edges
-// of a feature curve or with a prescribed valence other than 2 (flat).
+// with a prescribed valence other than 2 (flat; a CAD curve between tangent faces, a seam, is not
+// sharp).
 struct Feature_fidelity
 {
   double feature_length = 0;  // total length of the sharp edges of the tet mesh
-  double covered_length = 0;  // length of the boundary hex edges lying along them
+  double covered_length = 0;  // length of the sharp edges that boundary hex edges follow
   std::size_t hex_feature_edges = 0;   // boundary hex edges lying along a sharp edge
   std::size_t valence_matched = 0;     // ... whose number of hexahedra is the prescribed valence
 };
 
-// A boundary hex edge lies along a sharp edge if its endpoints and midpoint are within
-// `tolerance` (model units) of the sharp edges; its valence is compared with the prescribed
-// valence of the sharp edge nearest to its midpoint.
+// A boundary hex edge lies along the sharp edges if its endpoints are within `tolerance` (model
+// units) or 5% of its length of them, and its midpoint within 10% of its length: hex edges follow a
+// curved sharp edge as chords (a chord of 1/16 of a circle is 5% of its length off the arc at its
+// midpoint), while an edge cutting a corner is 35% off. Its valence is compared with the prescribed
+// valence of the sharp edge nearest to its midpoint. A sharp edge (of the tet mesh) is covered
+// where its midpoint is within 10% of the length of the nearest hex edge lying along, or `tolerance`.
 template <class Traits>
 Feature_fidelity measure_feature_fidelity(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<int>& valences,
                                           const Hexahedral_mesh_3& hexes, double tolerance)
@@ -51,7 +55,7 @@ Feature_fidelity measure_feature_fidelity(const Tetrahedral_mesh_3<Traits>& mesh
   std::vector<int> segment_valence;
   for(auto e : mesh.boundary_edges()) {
     const int k = e < valences.size() ? valences[e] : 2;
-    if(mesh.edge_curve(e) < 0 && k == 2) continue;
+    if(k == 2) continue;
     const auto& ev = mesh.edge_vertices(e);
     segments.emplace_back(point(mesh.point(ev[0])), point(mesh.point(ev[1])));
     segment_valence.push_back(k);
@@ -91,20 +95,30 @@ Feature_fidelity measure_feature_fidelity(const Tetrahedral_mesh_3<Traits>& mesh
     i = j;
   }
 
-  const double t2 = tolerance * tolerance;
+  std::vector<K::Segment_3> along;
   for(const auto& be : boundary_edges) {
     const std::uint32_t a = std::uint32_t(be.first >> 32), b = std::uint32_t(be.first & 0xffffffffu);
     const K::Point_3 pa = point(hexes.points[a]), pb = point(hexes.points[b]);
     const K::Point_3 mid = CGAL::midpoint(pa, pb);
-    if(tree.squared_distance(pa) > t2 || tree.squared_distance(pb) > t2) continue;
+    const double length = std::sqrt(CGAL::squared_distance(pa, pb));
+    const double tv = (std::max)(tolerance, 0.05 * length), tm = (std::max)(tolerance, 0.1 * length);
+    if(tree.squared_distance(pa) > tv * tv || tree.squared_distance(pb) > tv * tv) continue;
     const auto closest = tree.closest_point_and_primitive(mid);
-    if(CGAL::squared_distance(mid, closest.first) > t2) continue;
+    if(CGAL::squared_distance(mid, closest.first) > tm * tm) continue;
     ++f.hex_feature_edges;
-    f.covered_length += std::sqrt(CGAL::squared_distance(pa, pb));
+    along.emplace_back(pa, pb);
     const int prescribed = segment_valence[std::size_t(closest.second - segments.cbegin())];
     if(edge_hexes[be.first] == prescribed) ++f.valence_matched;
   }
-  f.covered_length = (std::min)(f.covered_length, f.feature_length);
+  if(along.empty()) return f;
+  Tree along_tree(along.cbegin(), along.cend());
+  along_tree.accelerate_distance_queries();
+  for(const K::Segment_3& s : segments) {
+    const K::Point_3 mid = CGAL::midpoint(s.source(), s.target());
+    const auto closest = along_tree.closest_point_and_primitive(mid);
+    const double t = (std::max)(tolerance, 0.1 * std::sqrt(closest.second->squared_length()));
+    if(CGAL::squared_distance(mid, closest.first) <= t * t) f.covered_length += std::sqrt(s.squared_length());
+  }
   return f;
 }
 
