@@ -10,6 +10,7 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_boundary_groups.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_orientation.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_to_lcc.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
@@ -510,6 +511,57 @@ TEST(HexahedralMeshIO, SolverFormatsAreWrittenAtomically)
   }
 }
 
+// Hex meshes from other tools: written in the mirrored vertex order, or mixing both orders; oriented
+// back (every hexahedron positive, checked by check_hexahedral_mesh from the cells), the same vertices
+// and cells; a degenerate hexahedron and a quad in three hexahedra refused.
+TEST(HexahedralMeshOrientation, MirroredAndMixedMeshesAreOriented)
+{
+  const auto grid = T::make_grid(3, 2, 2).mesh;
+  auto mirror = [](std::array<std::uint32_t, 8> h) {
+    return std::array<std::uint32_t, 8>{ {h[0], h[3], h[2], h[1], h[4], h[7], h[6], h[5]} };
+  };
+  auto same_cells = [](const HR::Hexahedral_mesh_3& a, const HR::Hexahedral_mesh_3& b) {
+    if(a.hexahedra.size() != b.hexahedra.size()) return false;
+    for(std::size_t h = 0; h < a.hexahedra.size(); ++h) {
+      auto x = a.hexahedra[h], y = b.hexahedra[h];
+      std::sort(x.begin(), x.end());
+      std::sort(y.begin(), y.end());
+      if(x != y) return false;
+    }
+    return true;
+  };
+  for(int mode = 0; mode < 3; ++mode) {
+    SCOPED_TRACE(mode);
+    auto m = grid;
+    for(std::size_t h = 0; h < m.hexahedra.size(); ++h)
+      if(mode == 1 || (mode == 2 && h % 3 != 0)) m.hexahedra[h] = mirror(m.hexahedra[h]);
+    const std::size_t expected = mode == 0 ? 0 : mode == 1 ? m.hexahedra.size() : m.hexahedra.size() - (m.hexahedra.size() + 2) / 3;
+    if(mode > 0) EXPECT_FALSE(HR::check_hexahedral_mesh(m).valid);
+    const HR::Hexahedral_orientation_result r = HR::orient_hexahedral_mesh(m);
+    EXPECT_EQ(r.reoriented, expected);
+    EXPECT_EQ(r.components, 1u);
+    EXPECT_EQ(r.mirrored_components, mode == 1 ? 1u : 0u);
+    const HR::Hexahedral_mesh_check c = HR::check_hexahedral_mesh(m);
+    EXPECT_TRUE(c.valid);
+    EXPECT_EQ(c.inverted_hexahedra, 0u);
+    EXPECT_NEAR(c.min_scaled_jacobian, 1.0, 1e-12);
+    EXPECT_EQ(m.points, grid.points);
+    EXPECT_TRUE(same_cells(m, grid));
+  }
+  auto degenerate = grid;
+  degenerate.hexahedra[4][6] = degenerate.hexahedra[4][2];
+  try {
+    HR::orient_hexahedral_mesh(degenerate, "d.mesh");
+    ADD_FAILURE() << "a degenerate hexahedron was accepted";
+  } catch(const HR::Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("hexahedron 4 lists vertex"), std::string::npos) << e.what();
+  }
+  auto three = T::make_grid(1, 1, 2).mesh;
+  three.hexahedra.push_back(three.hexahedra[0]); // the quad between the two cells, now in three
+  three.hexahedra.back()[0] = three.hexahedra[1][4];
+  EXPECT_THROW(HR::orient_hexahedral_mesh(three), HR::Input_error);
+}
+
 TEST(HexahedralMeshIO, WritersRejectBrokenMeshesAndLeaveNoFile)
 {
   auto m = T::make_grid(1, 1, 1).mesh;
@@ -677,4 +729,50 @@ TEST(HexahedralMeshToLCC, CellsAndBoundary)
   auto broken = T::make_grid(1, 1, 1).mesh;
   broken.hexahedra[0][2] = 8;
   EXPECT_THROW(HR::hexahedral_mesh_to_lcc(broken), HR::Error);
+}
+
+// An LCC whose facets carry an int: the boundary facets get the patch of their quad (each side of a box
+// is one patch: every facet of a patch lies on one side, and each side has the patch's quads).
+struct Items_with_facet_patch
+{
+  template <class Refs>
+  struct Dart_wrapper
+  {
+    typedef CGAL::Cell_attribute_with_point<Refs> Vertex_attribute;
+    typedef CGAL::Cell_attribute<Refs, int> Facet_attribute;
+    typedef std::tuple<Vertex_attribute, void, Facet_attribute> Attributes;
+  };
+};
+
+TEST(HexahedralMeshToLCC, BoundaryFacetsCarryTheirPatch)
+{
+  typedef CGAL::Linear_cell_complex_for_combinatorial_map<3, 3, CGAL::Linear_cell_complex_traits<3>, Items_with_facet_patch> LCC;
+  auto m = T::make_grid(3, 2, 1).mesh;
+  HR::compute_hexahedral_boundary_groups(m);
+  LCC lcc;
+  HR::hexahedral_mesh_to_lcc(m, lcc);
+  ASSERT_TRUE(lcc.is_valid());
+  std::map<int, std::size_t> facets_per_patch;
+  std::map<int, std::set<std::pair<int, double> > > sides;
+  std::size_t free_facets = 0;
+  for(auto d = lcc.one_dart_per_cell<2>().begin(); d != lcc.one_dart_per_cell<2>().end(); ++d) {
+    if(!lcc.is_free<3>(d)) { EXPECT_TRUE(lcc.attribute<2>(d) == nullptr); continue; }
+    ++free_facets;
+    ASSERT_TRUE(lcc.attribute<2>(d) != nullptr);
+    const int patch = lcc.info<2>(d);
+    ++facets_per_patch[patch];
+    for(int axis = 0; axis < 3; ++axis) {
+      bool same = true;
+      const LCC::Dart_handle start = d;
+      LCC::Dart_handle e = start;
+      do { same = same && lcc.point(e)[axis] == lcc.point(start)[axis]; e = lcc.beta(e, 1); } while(e != start);
+      if(same) sides[patch].insert(std::make_pair(axis, lcc.point(d)[axis]));
+    }
+  }
+  EXPECT_EQ(free_facets, m.boundary_quadrilaterals.size());
+  EXPECT_EQ(facets_per_patch.size(), 6u);
+  for(const auto& kv : sides) EXPECT_EQ(kv.second.size(), 1u) << "patch " << kv.first;
+  std::multiset<std::size_t> sizes;
+  for(const auto& kv : facets_per_patch) sizes.insert(kv.second);
+  EXPECT_EQ(sizes, (std::multiset<std::size_t>{2, 2, 3, 3, 6, 6}));
 }

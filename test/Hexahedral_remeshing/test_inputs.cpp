@@ -576,7 +576,7 @@ TEST(Gmsh, ThinWallsAreMeasuredAndRefusedQuickly)
   const HR::IO::CAD_part_measures box = HR::IO::measure_CAD_part(inputs + "box_1x2x3.step");
   EXPECT_NEAR(box.volume, 6.0, 1e-9);
   EXPECT_NEAR(box.wall_thickness, 1.0, 1e-9);
-  EXPECT_NEAR(box.diagonal, std::sqrt(14.0), 1e-9);
+  EXPECT_NEAR(box.diagonal, std::sqrt(14.0), 1e-6); // OpenCASCADE pads its boxes by the shape tolerance (1e-7)
   const HR::IO::CAD_part_measures plate = HR::IO::measure_CAD_part(inputs + "thin_plate.step");
   EXPECT_NEAR(plate.wall_thickness, 0.03, 1e-9);
   EXPECT_NEAR(plate.volume, 0.12, 1e-9);

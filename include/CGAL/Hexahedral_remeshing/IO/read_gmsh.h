@@ -153,6 +153,35 @@ inline std::string mesher_failure(const std::string& source, double diagonal, do
          "or fuse them along an edge in the CAD tool, and retry (gmsh: " + raw + ")";
 }
 
+// A solid that touches itself may also come out of gmsh meshed, with tetrahedra of zero volume where
+// its faces touch (a sphere tangent to a face, at a fine size): "" if every tetrahedron has a volume,
+// else the reason, as mesher_failure() gives it, with the place of the first flat tetrahedron.
+template <class Point>
+std::string flat_tetrahedra_failure(const Tetrahedral_soup_3<Point>& soup, double diagonal)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 P;
+  auto point = [&](std::size_t v) {
+    return P(CGAL::to_double(soup.points[v][0]), CGAL::to_double(soup.points[v][1]), CGAL::to_double(soup.points[v][2]));
+  };
+  for(const auto& t : soup.tetrahedra) {
+    const P a = point(t[0]), b = point(t[1]), c = point(t[2]), d = point(t[3]);
+    if(CGAL::orientation(a, b, c, d) != CGAL::COPLANAR) continue;
+    std::string where;
+    try { where = touching_faces(1e-3 * diagonal); } catch(...) {}
+    if(where.empty()) {
+      std::ostringstream os;
+      os.precision(4);
+      os << "near (" << (a.x() + b.x() + c.x() + d.x()) / 4 << ", " << (a.y() + b.y() + c.y() + d.y()) / 4 << ", "
+         << (a.z() + b.z() + c.z() + d.z()) / 4 << ")";
+      where = os.str();
+    }
+    return "the solid touches itself: " + where + ", where a solid has zero thickness (gmsh made a flat tetrahedron "
+           "there); no tetrahedral mesh can fill it: leave a gap between those faces or fuse them along an edge in "
+           "the CAD tool, and retry";
+  }
+  return std::string();
+}
+
 inline void check_readable(const std::string& filename)
 {
   std::ifstream probe(filename, std::ios::binary);
@@ -481,6 +510,8 @@ void read_CAD(const std::string& filename, Tetrahedral_soup_3<Point>& soup,
     if(result.tetrahedra.empty())
       throw Input_error(filename, 0, "gmsh produced no tetrahedra (" + internal_gmsh::last_error("no message") +
                         "); check that the part is a valid solid, or try another --mesh-size");
+    const std::string flat = internal_gmsh::flat_tetrahedra_failure(result, diagonal);
+    if(!flat.empty()) throw Input_error(filename, 0, flat);
     const std::map<int, double> acute = grading ? internal::acute_cad_curves(result, std::atan(1.0)) : std::map<int, double>();
     if(!acute.empty()) {
       gmsh::model::mesh::clear();

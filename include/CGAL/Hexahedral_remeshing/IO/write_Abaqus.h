@@ -42,10 +42,7 @@ inline void write_id_lines(std::ostream& out, const std::vector<std::size_t>& id
 /// \throws Error if a hexahedron refers to a missing vertex or the file cannot be written.
 inline void write_Abaqus(const std::string& filename, const Hexahedral_mesh_3& hexes)
 {
-  for(std::size_t h = 0; h < hexes.hexahedra.size(); ++h)
-    for(auto v : hexes.hexahedra[h])
-      if(v >= hexes.points.size())
-        throw Error(filename + ": hexahedron " + std::to_string(h) + " has vertex index " + std::to_string(v) + " out of range");
+  internal::check_hexahedra_in_range(filename, hexes);
   const internal::Grouped_mesh grouped(hexes);
   const Hexahedral_mesh_3& m = grouped.mesh();
   write_file_atomically(filename, [&](std::ostream& out) {

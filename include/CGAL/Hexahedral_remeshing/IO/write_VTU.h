@@ -47,10 +47,7 @@ void write_data_array(std::ostream& out, const char* type, const std::string& na
 /// \throws Error if a hexahedron refers to a missing vertex or the file cannot be written.
 inline void write_VTU(const std::string& filename, const Hexahedral_mesh_3& hexes)
 {
-  for(std::size_t h = 0; h < hexes.hexahedra.size(); ++h)
-    for(auto v : hexes.hexahedra[h])
-      if(v >= hexes.points.size())
-        throw Error(filename + ": hexahedron " + std::to_string(h) + " has vertex index " + std::to_string(v) + " out of range");
+  internal::check_hexahedra_in_range(filename, hexes);
   const internal::Grouped_mesh grouped(hexes);
   const Hexahedral_mesh_3& m = grouped.mesh();
   const std::size_t H = m.hexahedra.size(), Q = m.boundary_quadrilaterals.size();

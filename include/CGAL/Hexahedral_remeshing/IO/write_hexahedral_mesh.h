@@ -27,11 +27,7 @@ namespace internal_hex_writer {
 // A file that refers to missing vertices is worse than no file: reject before writing.
 inline void check_writable(const std::string& filename, const Hexahedral_mesh_3& hexes)
 {
-  for(std::size_t h = 0; h < hexes.hexahedra.size(); ++h)
-    for(auto v : hexes.hexahedra[h])
-      if(v >= hexes.points.size())
-        throw Error(filename + ": hexahedron " + std::to_string(h) + " has vertex index " + std::to_string(v) +
-                    " out of range (" + std::to_string(hexes.points.size()) + " vertices)");
+  internal::check_hexahedra_in_range(filename, hexes);
   if(!hexes.vertex_tags.empty() && hexes.vertex_tags.size() != hexes.points.size())
     throw Error(filename + ": vertex_tags has " + std::to_string(hexes.vertex_tags.size()) + " values for " +
                 std::to_string(hexes.points.size()) + " vertices");

@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_MESH_GROUPED_MESH_H
 
 #include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_boundary_groups.h>
 
 #include <cctype>
@@ -16,6 +17,16 @@
 namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
+
+// A file that refers to missing vertices is worse than no file: every writer rejects such a mesh first.
+inline void check_hexahedra_in_range(const std::string& filename, const Hexahedral_mesh_3& hexes)
+{
+  for(std::size_t h = 0; h < hexes.hexahedra.size(); ++h)
+    for(auto v : hexes.hexahedra[h])
+      if(v >= hexes.points.size())
+        throw Error(filename + ": hexahedron " + std::to_string(h) + " has vertex index " + std::to_string(v) +
+                    " out of range (" + std::to_string(hexes.points.size()) + " vertices)");
+}
 
 // The mesh a solver-format writer writes: `hexes` itself when it has its boundary groups, else a
 // copy grouped by its own sharp edges (a file for a solver always names its boundary).
