@@ -354,6 +354,28 @@ grep -q "^Quadrilaterals" "$tmp/box.mesh" || fail "MEDIT output lacks the bounda
 "$hexmesh" remesh "$inputs/box_1x2x3.step" --hexahedra 200 --out "$tmp/box.obj" > /dev/null 2> "$tmp/err"
 [ $? -eq 2 ] && grep -q ".inp (Abaqus, CalculiX) or .msh" "$tmp/err" || fail "unknown hex extension: $(cat "$tmp/err")"
 
+# Named boundary groups: a .msh whose surfaces are in named physical groups (inlet, outlet, and walls of
+# four surfaces) gives one surface per name in the .inp and one physical surface per name in the .msh
+"$py" - "$tmp/named.msh" <<'PY'
+import sys, gmsh
+gmsh.initialize(); gmsh.option.setNumber('General.Terminal', 0)
+gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1); gmsh.model.occ.synchronize()
+by_x = {}
+for _, t in gmsh.model.getEntities(2):
+    x = gmsh.model.occ.getCenterOfMass(2, t)[0]
+    by_x.setdefault('inlet' if abs(x) < 1e-9 else 'outlet' if abs(x - 1) < 1e-9 else 'walls', []).append(t)
+for name, tags in by_x.items(): gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
+gmsh.model.setPhysicalName(3, gmsh.model.addPhysicalGroup(3, [1]), 'solid')
+gmsh.option.setNumber('Mesh.MeshSizeMax', 0.2); gmsh.model.mesh.generate(3)
+gmsh.option.setNumber('Mesh.MshFileVersion', 4.1); gmsh.write(sys.argv[1]); gmsh.finalize()
+PY
+"$hexmesh" remesh "$tmp/named.msh" --hexahedra 64 --out "$tmp/named.inp" --out "$tmp/named_out.msh" --quiet > /dev/null 2> "$tmp/err" \
+  || fail "remesh of a named .msh: $(tail -1 "$tmp/err")"
+[ "$(grep '^\*SURFACE' "$tmp/named.inp" | sort | tr '\n' ' ')" = "*SURFACE, NAME=inlet, TYPE=ELEMENT *SURFACE, NAME=outlet, TYPE=ELEMENT *SURFACE, NAME=walls, TYPE=ELEMENT " ] \
+  || fail "named patches: $(grep '^\*SURFACE' "$tmp/named.inp")"
+"$py" "$root/test/Hexahedral_remeshing/check_solver_formats.py" --inp "$tmp/named.inp" --msh "$tmp/named_out.msh" > "$tmp/formats" \
+  || fail "named patches: $(cat "$tmp/formats")"
+
 # Thin walls (issue 29): a 2 x 2 x 0.03 plate with 400 hexahedra (edge 0.067) is refused within seconds
 # with its thickness and a size that fits; at that size it gives one layer of hexahedra
 start=$(date +%s)

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -217,6 +218,9 @@ public:
   std::size_t number_of_feature_curves() const { return m_number_of_curves; }
   /// Number of distinct surface patch ids.
   std::size_t number_of_surface_patches() const { return m_number_of_patches; }
+  /// Names of surface patches given by the input (gmsh physical group or entity names), as
+  /// (patch id, name) pairs sorted by patch; empty if the input names none.
+  const std::vector<std::pair<int, std::string> >& surface_patch_names() const { return m_patch_names; }
   /// Number of edges tagged with a feature curve.
   std::size_t number_of_feature_edges() const { return m_number_of_feature_edges; }
   /// @}
@@ -272,6 +276,7 @@ private:
   std::vector<Index> m_corners;
   std::size_t m_number_of_curves = 0, m_number_of_patches = 0, m_number_of_feature_edges = 0;
   std::string m_source;
+  std::vector<std::pair<int, std::string> > m_patch_names;
 };
 
 } // namespace Hexahedral_remeshing

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -35,6 +36,9 @@ struct Tetrahedral_soup_3
   std::vector<int> feature_edge_curves;
   /// Corner vertices.
   std::vector<std::size_t> corners;
+  /// Names of surface patches given by the input (gmsh physical group names, CAD face names), as
+  /// (patch id, name) pairs.
+  std::vector<std::pair<int, std::string> > patch_names;
   /// Name of the source (file name) for error messages; empty for in-memory data.
   std::string source;
 };

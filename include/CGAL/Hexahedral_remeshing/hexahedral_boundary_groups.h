@@ -65,7 +65,8 @@ inline Patch_surface patch_surface(const Hexahedral_smoothing_reference& referen
 /// feature curves), numbered from 0. A quad takes the patch most of five of its points (its centre,
 /// and halfway from the centre to each corner) are closest to. Every hex edge between quads of two
 /// patches is a feature edge, with the input's feature curve nearest to its midpoint (within a
-/// quarter of its length), else a number per pair of patches.
+/// quarter of its length), else a number per pair of patches. The names of the input's patches
+/// (`surface_patch_names()`: gmsh physical groups, named CAD faces) go to `hexes.patch_names`.
 ///
 /// \param hexes the hexahedral mesh, in the model units of `mesh` (positions as they are final)
 /// \param mesh the tetrahedral mesh of the solid
@@ -91,6 +92,8 @@ Hexahedral_boundary_groups_report compute_hexahedral_boundary_groups(Hexahedral_
     surface.segment_curve.push_back(mesh.edge_curve(e));
   }
   internal::assign_boundary_groups(hexes, surface);
+  hexes.patch_names.clear();
+  if(mesh.number_of_surface_patches() > 0) hexes.patch_names = mesh.surface_patch_names();
   return internal::boundary_groups_report(hexes);
 }
 

@@ -228,6 +228,28 @@ std::vector<std::size_t> select_corners(const Tetrahedral_soup_3<Point>& soup, c
 // triangles tagged by their surface entity, line segments tagged by their curve entity (but seam
 // curves, which bound one surface only), and corners. Volume elements other than tetrahedra are
 // refused with their counts.
+// The name of surface entity `tag`: its physical group's name (a .msh file, a model with physical
+// groups), else its own (a CAD face with a name), if any.
+template <class Point>
+void add_patch_name(int tag, Tetrahedral_soup_3<Point>& soup)
+{
+  for(const auto& pn : soup.patch_names)
+    if(pn.first == tag) return;
+  std::string name;
+  try {
+    std::vector<int> groups;
+    gmsh::model::getPhysicalGroupsForEntity(2, tag, groups);
+    for(int g : groups) {
+      gmsh::model::getPhysicalName(2, g, name);
+      if(!name.empty()) break;
+    }
+    if(name.empty()) gmsh::model::getEntityName(2, tag, name);
+  } catch(...) {
+    name.clear();
+  }
+  if(!name.empty()) soup.patch_names.emplace_back(tag, name);
+}
+
 template <class Point>
 void extract(const std::string& source, Tetrahedral_soup_3<Point>& soup)
 {
@@ -280,6 +302,7 @@ void extract(const std::string& source, Tetrahedral_soup_3<Point>& soup)
               ++other_volume_cells[family];
             }
           } else if(edim == 2 && family == "Triangle") {
+            if(e == 0) add_patch_name(dt.second, soup);
             soup.triangles.push_back({node(c[0]), node(c[1]), node(c[2])});
             soup.triangle_patches.push_back(dt.second);
           } else if(edim == 1 && !seam) {

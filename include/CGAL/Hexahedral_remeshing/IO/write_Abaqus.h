@@ -36,7 +36,7 @@ inline void write_id_lines(std::ostream& out, const std::vector<std::size_t>& id
 /// order: a positively oriented hexahedron has a positive volume there), and for every surface
 /// patch of `hexes.boundary_quadrilaterals` an `*NSET` of its nodes and an element-face based
 /// `*SURFACE, TYPE=ELEMENT` (lines `element, S1..S6`), both named after the patch (its name in
-/// `patch_names`, made an identifier, else `patch_<id>`); then an `*NSET` `curve_<id>` per feature
+/// `patch_names`, made an identifier, else `patch_<id>`; patches of one name form one group); then an `*NSET` `curve_<id>` per feature
 /// curve of `hexes.feature_edges`. A mesh without boundary groups is grouped by its own sharp edges
 /// (`compute_hexahedral_boundary_groups()` on a copy). The file is written atomically.
 /// \throws Error if a hexahedron refers to a missing vertex or the file cannot be written.
@@ -56,8 +56,8 @@ inline void write_Abaqus(const std::string& filename, const Hexahedral_mesh_3& h
       for(int i = 0; i < 8; ++i) out << ", " << m.hexahedra[h][i] + 1;
       out << "\n";
     }
-    for(const auto& group : grouped.quads_by_patch()) {
-      const std::string name = grouped.patch_name(group.first);
+    for(const auto& group : grouped.quads_by_name()) {
+      const std::string& name = group.first;
       std::set<std::size_t> nodes;
       for(std::size_t i : group.second)
         for(auto v : m.boundary_quadrilaterals[i].vertices) nodes.insert(std::size_t(v) + 1);

@@ -13,6 +13,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,7 @@ inline void build_model(const internal::Grouped_mesh& grouped)
   gmsh::model::mesh::addElementsByType(volume, 5, tags, nodes);
   gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {volume}), "part");
   std::size_t next = m.hexahedra.size() + 1;
+  std::map<std::string, std::vector<int> > surfaces_by_name;
   for(const auto& group : grouped.quads_by_patch()) {
     const int surface = gmsh::model::addDiscreteEntity(2);
     tags.clear(); nodes.clear();
@@ -53,8 +55,10 @@ inline void build_model(const internal::Grouped_mesh& grouped)
       for(auto v : m.boundary_quadrilaterals[i].vertices) nodes.push_back(std::size_t(v) + 1);
     }
     gmsh::model::mesh::addElementsByType(surface, 3, tags, nodes);
-    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), grouped.patch_name(group.first));
+    surfaces_by_name[grouped.patch_name(group.first)].push_back(surface);
   }
+  for(const auto& named : surfaces_by_name)
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, named.second), named.first);
   for(const auto& group : grouped.edges_by_curve()) {
     const int curve = gmsh::model::addDiscreteEntity(1);
     tags.clear(); nodes.clear();
@@ -73,8 +77,8 @@ inline void build_model(const internal::Grouped_mesh& grouped)
 /// Writes `hexes` as a gmsh mesh file, format 4.1 ASCII, through the gmsh library: the hexahedra
 /// (element type 5, node `v + 1` is vertex `v`, element `h + 1` hexahedron `h`; VTK order is
 /// gmsh's) in a volume entity with the physical group `part`; the boundary quadrilaterals (type 3)
-/// in one surface entity and physical group per surface patch (named after the patch as in
-/// `write_Abaqus()`); the feature edges (type 1) in one curve entity and physical group per
+/// in one surface entity per surface patch, in a physical group per patch name (as in
+/// `write_Abaqus()`: patches of one name form one group); the feature edges (type 1) in one curve entity and physical group per
 /// feature curve (`curve_<id>`). A mesh without boundary groups is grouped by its own sharp edges.
 /// gmsh runs in a child process; the file is written to a temporary name and renamed.
 /// \throws Error if a hexahedron refers to a missing vertex or the file cannot be written.

@@ -637,6 +637,10 @@ private:
     }
     mesh.m_corners.assign(corners.begin(), corners.end());
     mesh.m_number_of_patches = patches.size();
+    mesh.m_patch_names.clear();
+    for(const auto& pn : soup.patch_names)
+      if(patches.count(pn.first) > 0 && !pn.second.empty()) mesh.m_patch_names.push_back(pn);
+    std::sort(mesh.m_patch_names.begin(), mesh.m_patch_names.end());
     mesh.m_number_of_curves = curves.size();
   }
 

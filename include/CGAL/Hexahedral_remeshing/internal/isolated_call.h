@@ -118,6 +118,8 @@ std::string serialize_soup(const Tetrahedral_soup_3<Point>& soup)
   }
   w.put(std::uint64_t(soup.corners.size()));
   for(std::size_t v : soup.corners) w.put(std::uint64_t(v));
+  w.put(std::uint64_t(soup.patch_names.size()));
+  for(const auto& pn : soup.patch_names) { w.put(std::int64_t(pn.first)); w.put_string(pn.second); }
   return std::move(w.bytes());
 }
 
@@ -158,6 +160,12 @@ void deserialize_soup(const std::string& bytes, Tetrahedral_soup_3<Point>& soup)
   const std::size_t nc = count(8);
   soup.corners.resize(nc);
   for(std::size_t& v : soup.corners) v = std::size_t(r.get<std::uint64_t>());
+  const std::size_t nn = count(16);
+  soup.patch_names.resize(nn);
+  for(auto& pn : soup.patch_names) {
+    pn.first = int(r.get<std::int64_t>());
+    pn.second = r.get_string();
+  }
 }
 
 // Runs `task` in a child process so that a crash (or an abort, or a stray print) of a third-party

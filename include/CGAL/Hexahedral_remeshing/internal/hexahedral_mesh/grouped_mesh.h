@@ -60,15 +60,35 @@ public:
 
   // The name of a patch: its given name made a valid identifier of every solver format (letters,
   // digits and '_', starting with a letter, at most 64 characters), else `patch_<id>`.
+  // The name of a patch's group: its given name made an identifier, else `patch_<id>`. Patches of one
+  // name (a physical group of several surfaces) form one group.
   std::string patch_name(int patch) const
   {
     for(const auto& pn : m_mesh->patch_names)
       if(pn.first == patch) {
-        std::string s;
-        for(unsigned char c : pn.second) s += std::isalnum(c) ? char(c) : '_';
-        if(!s.empty() && std::isalpha((unsigned char)s[0]) && s.size() <= 64 && s.compare(0, 6, "curve_") != 0) return s;
+        const std::string s = identifier(pn.second);
+        if(!s.empty()) return s;
       }
     return patch < 0 ? std::string("patch_unknown") : "patch_" + std::to_string(patch);
+  }
+  // The boundary quads of each named group (indices into `boundary_quadrilaterals`), by name.
+  std::map<std::string, std::vector<std::size_t> > quads_by_name() const
+  {
+    std::map<std::string, std::vector<std::size_t> > groups;
+    for(const auto& g : quads_by_patch()) {
+      auto& quads = groups[patch_name(g.first)];
+      quads.insert(quads.end(), g.second.begin(), g.second.end());
+    }
+    return groups;
+  }
+  // A name made an identifier of every solver format, or "" if it cannot be one.
+  static std::string identifier(const std::string& name)
+  {
+    std::string s;
+    for(unsigned char c : name) s += std::isalnum(c) ? char(c) : '_';
+    const bool ok = !s.empty() && std::isalpha((unsigned char)s[0]) && s.size() <= 64 && s.compare(0, 6, "curve_") != 0 &&
+                    s.compare(0, 6, "patch_") != 0 && s != "part" && s != "PART";
+    return ok ? s : std::string();
   }
   static std::string curve_name(int curve)
   {
