@@ -142,9 +142,9 @@ inline bool read_cad_at_hex_size(const Arguments& args, const std::string& in, M
   const std::string ext = HR::IO::file_extension(in);
   const bool cad = ext == "step" || ext == "stp" || ext == "brep" || ext == "iges" || ext == "igs";
   if(!cad || args.has("mesh-size") || args.has("max-volume")) return false;
-  progress.start("measuring " + in);
+  // one progress line for the measure and the tetrahedralization: a refusal stays the only line printed
+  progress.start("reading " + in + " (tetrahedralized at the hex size)");
   const HR::IO::CAD_part_measures m = HR::IO::measure_CAD_part(in, input_time_limit(args));
-  progress.finish();
   const double h = target > 0 ? target : std::cbrt(m.volume / (hexahedra > 0 ? double(hexahedra) : 2000.));
   if(m.wall_thickness < HR::internal::minimum_wall_thickness_over_hex_edge * h) {
     HR::internal::Wall_thickness w;
@@ -158,7 +158,6 @@ inline bool read_cad_at_hex_size(const Arguments& args, const std::string& in, M
   std::ostringstream os;
   os << std::setprecision(17) << size;
   sized.set("mesh-size", os.str());
-  progress.start("reading " + in + " (tetrahedralized at the hex size)");
   read_input_mesh(sized, in, mesh, !args.has("no-chord-split"));
   progress.finish();
   return true;
