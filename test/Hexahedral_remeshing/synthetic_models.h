@@ -78,4 +78,26 @@ inline std::string prism_30_60_90_off()
   return os.str();
 }
 
+// A U-channel: the rectangle [0,2] x [0,1] with the slot [1 - w/2, 1 + w/2] x [0.4, 1] cut out,
+// extruded from z = 0 to z = 1. The slot's two bottom edges are concave (valence 3), w apart.
+inline std::string u_channel_off(double w)
+{
+  const double a = 1 - w / 2, b = 1 + w / 2;
+  const double P[8][2] = {{0, 0}, {2, 0}, {2, 1}, {b, 1}, {b, 0.4}, {a, 0.4}, {a, 1}, {0, 1}};
+  // the cap as triangles of the (counter-clockwise) polygon
+  const int T[6][3] = {{0, 1, 4}, {0, 4, 5}, {1, 2, 4}, {2, 3, 4}, {0, 5, 7}, {5, 6, 7}};
+  std::ostringstream os;
+  os.precision(17);
+  os << "OFF\n16 28 0\n";
+  for(int z = 0; z < 2; ++z)
+    for(const auto& p : P) os << p[0] << " " << p[1] << " " << z << "\n";
+  for(const auto& t : T) os << "3 " << t[0] << " " << t[2] << " " << t[1] << "\n";
+  for(const auto& t : T) os << "3 " << t[0] + 8 << " " << t[1] + 8 << " " << t[2] + 8 << "\n";
+  for(int i = 0; i < 8; ++i) {
+    const int j = (i + 1) % 8;
+    os << "3 " << i << " " << j << " " << j + 8 << "\n3 " << i << " " << j + 8 << " " << i + 8 << "\n";
+  }
+  return os.str();
+}
+
 #endif // HEXREM_TEST_SYNTHETIC_MODELS_H

@@ -458,6 +458,9 @@ TEST(IntegerGridMap, CubeHasNCubedUnitCells)
     expect_valid(r.check);
     EXPECT_NEAR(r.check.parameter_volume, double(N * N * N), 1e-9);
     EXPECT_EQ(r.map.transitions.size(), r.check.interior_faces);
+    // nothing folds: the rounded map is the map, no program runs
+    EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::GREEDY_ROUNDING);
+    EXPECT_EQ(r.report.separation_rounds, 0);
   }
 }
 
@@ -545,6 +548,53 @@ void print(const char* name, const Map_run& r)
               r.check.boundary_edges, r.check.interior_valence_mismatches, r.report.cut_faces,
               r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
               int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds);
+}
+
+// Issue 27: a wall thinner than half a hex edge. The greedy rounding puts both faces of the slab on
+// one integer plane (0.4 hex edges round to 0) and every tetrahedron collapses; the separation
+// program keeps the two planes one unit apart: one layer of unit cells.
+TEST(IntegerGridMap, ThinSlabKeepsOneLayer)
+{
+  const Mesh m = from_off("hexrem_igm_slab", box_off(2, 2, 0.2), 0.0005);
+  const Map_run greedy = run(m, HR::parameters::quantization(HR::Integer_grid_map_quantization::GREEDY_ROUNDING,
+                                                             HR::parameters::target_edge_length(0.5)));
+  print("slab, greedy rounding", greedy);
+  EXPECT_GT(greedy.check.inverted + greedy.check.degenerate, m.number_of_tetrahedra() / 2);
+  EXPECT_EQ(greedy.report.quantization, HR::Integer_grid_map_quantization::GREEDY_ROUNDING);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.5));
+  print("slab, separation", r);
+  std::printf("  %s; folds %zu -> %zu, %d programs, %zu constraints, %zu variables, %.3f s\n",
+              r.report.quantization_reason.c_str(), r.report.folds_after_rounding, r.report.folds_after_separation,
+              r.report.separation_rounds, r.report.separation_constraints, r.report.separation_variables,
+              r.report.separation_seconds);
+  EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
+  EXPECT_GE(r.report.separation_constraints, 1u);
+  EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
+  expect_valid(r.check);
+  EXPECT_NEAR(r.check.parameter_volume, 4.0 * 4.0 * 1.0, 1e-9);
+}
+
+// Issue 27: two concave (valence-3) edges 0.4 hex edges apart, the bottom of a narrow slot. Rounded
+// onto one line, the slot's bottom face collapses; separated, the slot keeps one unit of width.
+TEST(IntegerGridMap, NarrowSlotKeepsItsTwoConcaveEdgesApart)
+{
+  const Mesh m = from_off("hexrem_igm_slot", u_channel_off(0.2), 0.0005);
+  const Map_run greedy = run(m, HR::parameters::quantization(HR::Integer_grid_map_quantization::GREEDY_ROUNDING,
+                                                             HR::parameters::target_edge_length(0.5)));
+  print("slot, greedy rounding", greedy);
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.5));
+  print("slot, separation", r);
+  std::printf("  %s; folds %zu -> %zu, %d programs, %zu constraints, %zu variables, %.3f s\n",
+              r.report.quantization_reason.c_str(), r.report.folds_after_rounding, r.report.folds_after_separation,
+              r.report.separation_rounds, r.report.separation_constraints, r.report.separation_variables,
+              r.report.separation_seconds);
+  std::size_t concave = 0;
+  for(Index e : m.boundary_edges()) concave += r.field.valences[e] == 3;
+  EXPECT_GT(concave, 0u);
+  EXPECT_GT(greedy.check.inverted + greedy.check.degenerate, 0u);
+  EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
+  expect_valid(r.check);
+  expect_same_valence_agreement(m, r);
 }
 
 // Without the band of fixed frames along acute edges, the field's valence-3 curve runs in the

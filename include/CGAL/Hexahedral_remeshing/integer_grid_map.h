@@ -19,6 +19,8 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/reduced_system.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separating_quantizer.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separation_constraints.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
@@ -44,7 +46,23 @@ namespace internal_np {
 enum target_edge_length_t { target_edge_length };
 enum maximum_stiffening_iterations_t { maximum_stiffening_iterations };
 enum untangling_t { untangling };
+enum quantization_t { quantization };
+enum quantization_time_limit_t { quantization_time_limit };
 } // namespace internal_np
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// How `compute_integer_grid_map()` makes the integer values of the map (named parameter
+/// `quantization`), and which way made it (`Integer_grid_map_result::quantization`).
+enum class Integer_grid_map_quantization {
+  /// Greedy rounding, then, if the rounded map folds, the separation program where it folds; the
+  /// map with fewer folds is kept (as a parameter: the default).
+  AUTOMATIC,
+  /// Greedy mixed-integer rounding only (one variable batch at a time, re-solving in between).
+  GREEDY_ROUNDING,
+  /// (reported) The map of the separation program: the rounded map folded, and the integer program
+  /// that keeps apart the entities it collapsed gave fewer folds.
+  SEPARATION_PROGRAM
+};
 
 namespace parameters {
 #ifdef DOXYGEN_RUNNING
@@ -55,10 +73,16 @@ template <class T> unspecified_type target_edge_length(const T& value);
 template <class T> unspecified_type maximum_stiffening_iterations(const T& value);
 /// Integer-grid map: run the foldover-free untangling when tetrahedra remain inverted (`bool`, default `true`).
 template <class T> unspecified_type untangling(const T& value);
+/// Integer-grid map: `Integer_grid_map_quantization::AUTOMATIC` (default) or `GREEDY_ROUNDING`.
+template <class T> unspecified_type quantization(const T& value);
+/// Integer-grid map: seconds the separation programs may take together (`double`, default 60).
+template <class T> unspecified_type quantization_time_limit(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_stiffening_iterations)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(untangling)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization_time_limit)
 #endif
 } // namespace parameters
 
@@ -127,8 +151,19 @@ struct Integer_grid_map_result
   double max_rounding = 0;
   /// Tetrahedra with `det J <= 0` (floating point) in the continuous relaxation, before rounding.
   std::size_t relaxed_inverted_tetrahedra = 0;
-  /// Tetrahedra with `det J <= 0` (floating point) after rounding, before the repair.
+  /// Tetrahedra with `det J <= 0` (floating point) after the quantization, before the repair.
   std::size_t rounded_inverted_tetrahedra = 0;
+  /// The way the integer values were made: `GREEDY_ROUNDING` or `SEPARATION_PROGRAM`.
+  Integer_grid_map_quantization quantization = Integer_grid_map_quantization::GREEDY_ROUNDING;
+  /// Why the separation program was not run, stopped, or not kept (empty with `GREEDY_ROUNDING` asked).
+  std::string quantization_reason;
+  /// Tetrahedra with `det J <= 0` after the greedy rounding, and after the separation program (the
+  /// structurally flat ones left out; equal if the program did not run or was not kept).
+  std::size_t folds_after_rounding = 0, folds_after_separation = 0;
+  /// Separation programs solved (Cbc), constraints and integer variables of the last one, their seconds.
+  int separation_rounds = 0;
+  std::size_t separation_constraints = 0, separation_variables = 0;
+  double separation_seconds = 0;
   /// Stiffening rounds run (0 if the local untangling of the rounded map repaired it).
   int stiffening_rounds = 0;
   /// True if the foldover-free untangling ran (only when tetrahedra other than the structurally flat
@@ -210,7 +245,11 @@ double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const 
 /// Steps: cut graph (dual spanning tree, pruned, singular and boundary edges protected); signed
 /// union-find of the 12 corner scalars per tetrahedron across uncut faces; integer tags; exact
 /// elimination of the cut constraints; greedy mixed-integer rounding with a CHOLMOD factorization
-/// analysed once; repair of the folds (foldover-free untangling around them, then stiffening of
+/// analysed once; where the rounded map folds, separation constraints between the entities the
+/// rounding collapsed (boundary planes, singular and feature lines that the seamless map keeps apart
+/// along an axis) and an integer program solved with COIN-OR Cbc that satisfies them with the fewest
+/// changes (robust_pipeline.md §3; QGP3D's separation, searched around the folds in the tetrahedral
+/// mesh, not in a motorcycle complex); repair of the folds (foldover-free untangling around them, then stiffening of
 /// distorted tetrahedra and untangling everywhere if folds remain); snapping to a dyadic
 /// grid so that every transition holds exactly in double.
 ///
@@ -236,6 +275,16 @@ double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const 
 ///     \cgalParamDescription{run the foldover-free untangling (Garanzha et al. 2021) of the continuous variables if tetrahedra are inverted after the rounding (without it, only the stiffening repairs)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{quantization}
+///     \cgalParamDescription{how the integer values are made: greedy rounding, followed where the rounded map folds by the separation program (`AUTOMATIC`), or greedy rounding only}
+///     \cgalParamType{`Integer_grid_map_quantization`}
+///     \cgalParamDefault{`Integer_grid_map_quantization::AUTOMATIC`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{quantization_time_limit}
+///     \cgalParamDescription{seconds the separation programs may take together; the best map found by then is kept}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress callbacks}
@@ -297,7 +346,15 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   const bool untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
   // the local untangling's reach around the folds (tets through shared vertices)
   const int untangling_rings = 3;
-    r.target_edge_length = h;
+  const Integer_grid_map_quantization quantization =
+    choose_parameter(get_parameter(np, internal_np::quantization), Integer_grid_map_quantization::AUTOMATIC);
+  const double quantization_time_limit = choose_parameter(get_parameter(np, internal_np::quantization_time_limit), 60.0);
+  if(!(quantization_time_limit >= 0) || !std::isfinite(quantization_time_limit))
+    throw Input_error(source, 0, "compute_integer_grid_map: quantization_time_limit must be a finite number of seconds >= 0");
+  if(quantization == Integer_grid_map_quantization::SEPARATION_PROGRAM)
+    throw Input_error(source, 0, "compute_integer_grid_map: quantization is AUTOMATIC or GREEDY_ROUNDING "
+                                 "(SEPARATION_PROGRAM is reported, not asked)");
+  r.target_edge_length = h;
   const double s = 1.0 / h;
 
   // Diagnostics of the field: non-meshable locations, frames disagreeing with the kept matchings, jogs.
@@ -446,10 +503,35 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   visitor.start_stage("rounding");
   t = Clock::now();
   internal::Fixed_variable_solver solver;
+  auto jump_form = [&](Index f, int k) {
+    internal::Linear_form form;
+    const auto e = expression(first_jump + 3 * cut_index[f] + std::uint32_t(k));
+    form.constant = e.constant;
+    for(const Term& term : e.terms) form.terms.emplace_back(Eigen::Index(column[term.var]), term.coef);
+    std::sort(form.terms.begin(), form.terms.end());
+    return form;
+  };
+  const internal::Separation_finder<Traits> finder(mesh, matchings, cut, geometry, P, x0, integer_column, flat, jump_form);
   internal::Greedy_rounding_quantizer greedy;
-  internal::Quantizer& quantizer = greedy;
+  internal::Separating_quantizer separating(
+    [&](const Eigen::VectorXd& seamless, const Eigen::VectorXd& v) { return finder.violated(seamless, v); },
+    [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
+  separating.time_limit = quantization_time_limit;
+  internal::Quantizer& quantizer = quantization == Integer_grid_map_quantization::GREEDY_ROUNDING
+                                     ? static_cast<internal::Quantizer&>(greedy) : separating;
   Eigen::VectorXd y = Eigen::VectorXd::Zero(m);
   const internal::Quantization_result q = quantizer.quantize(H, rhs, integer_column, solver, y);
+  if(quantization != Integer_grid_map_quantization::GREEDY_ROUNDING) {
+    const internal::Separation_report& sr = separating.report;
+    r.quantization = sr.used ? Integer_grid_map_quantization::SEPARATION_PROGRAM : Integer_grid_map_quantization::GREEDY_ROUNDING;
+    r.quantization_reason = sr.reason;
+    r.folds_after_rounding = sr.folds_after_rounding;
+    r.folds_after_separation = sr.folds_after_program;
+    r.separation_rounds = sr.rounds;
+    r.separation_constraints = sr.constraints;
+    r.separation_variables = sr.variables;
+    r.separation_seconds = sr.program_seconds;
+  }
   r.rounding_rounds = q.rounds;
   r.max_rounding = q.max_rounding;
   if(q.relaxed.size() == m) r.relaxed_inverted_tetrahedra = internal::count_non_positive_jacobians(geometry, P * q.relaxed + x0);
