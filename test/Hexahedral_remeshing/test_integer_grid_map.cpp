@@ -542,12 +542,15 @@ void print(const char* name, const Map_run& r)
 {
   std::printf("%-24s status %d inverted %zu degenerate %zu (flat by construction %zu) jogs %zu (degenerate %zu) "
               "valences %zu/%zu interior mismatches %zu cut %zu int %zu rounds %d stiffening %d untangled %d "
-              "disagreeing faces %zu h %.3g %.2f s\n",
+              "disagreeing faces %zu h %.3g %.2f s quantization %s folds %zu->%zu programs %d (%s)\n",
               name, int(r.report.status), r.check.inverted, r.check.degenerate, r.report.structurally_flat_tetrahedra,
               r.report.jogs, r.report.degenerate_jogs, r.check.boundary_edges - r.check.valence_mismatches,
               r.check.boundary_edges, r.check.interior_valence_mismatches, r.report.cut_faces,
               r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
-              int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds);
+              int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds,
+              r.report.quantization == HR::Integer_grid_map_quantization::SEPARATION_PROGRAM ? "separation" : "greedy",
+              r.report.folds_after_rounding, r.report.folds_after_separation, r.report.separation_rounds,
+              r.report.quantization_reason.c_str());
 }
 
 // Issue 27: a wall thinner than half a hex edge. The greedy rounding puts both faces of the slab on

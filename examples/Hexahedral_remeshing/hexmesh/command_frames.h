@@ -68,6 +68,9 @@ struct Frame_field_options
 {
   CGAL::Hexahedral_remeshing::Valence_heuristic heuristic;
   bool baseline = false, realign = true, repair = false, quiet = false;
+  // the map's quantization (parametrize, remesh): --greedy-rounding asks for the rounding alone
+  CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization =
+    CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::AUTOMATIC;
   // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
   double acute_edge_band = -1;
 };
@@ -79,6 +82,7 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   o.baseline = args.has("baseline");
   o.realign = !args.has("no-realign");
   o.repair = args.has("repair");
+  if(args.has("greedy-rounding")) o.quantization = CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::GREEDY_ROUNDING;
   o.quiet = args.has("quiet");
   if(args.has("acute-edge-band")) {
     o.acute_edge_band = args.number("acute-edge-band", 0.);

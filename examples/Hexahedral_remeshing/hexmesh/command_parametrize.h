@@ -34,7 +34,7 @@ inline std::vector<std::string> parametrize_options()
   return options;
 }
 
-inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "greedy-rounding", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 // The --target-edge-length option: a positive number of model units, 0 when absent (default size).
 inline double target_edge_length_option(const Arguments& args)
@@ -56,7 +56,8 @@ struct Map_progress_visitor : CGAL::Hexahedral_remeshing::Integer_grid_map_visit
 // Runs the map with progress; failures other than bad inputs become Stage_errors (exit 4).
 inline CGAL::Hexahedral_remeshing::Integer_grid_map_result
 run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& f,
-                     double target_edge_length, CGAL::Hexahedral_remeshing::Integer_grid_map& map, Progress& progress)
+                     double target_edge_length, CGAL::Hexahedral_remeshing::Integer_grid_map& map, Progress& progress,
+                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
@@ -64,9 +65,9 @@ run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahe
   try {
     if(target_edge_length > 0)
       return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                          HP::target_edge_length(target_edge_length).visitor(std::ref(visitor)));
+                                          HP::quantization(quantization, HP::target_edge_length(target_edge_length)).visitor(std::ref(visitor)));
     return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                        CGAL::parameters::visitor(std::ref(visitor)));
+                                        HP::quantization(quantization).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {
@@ -83,6 +84,15 @@ map_valence_agreement(const Mesh& mesh, const std::vector<int>& valences, const 
   for(const auto e : mesh.boundary_edges())
     prescribed.emplace_back(std::uint32_t(mesh.edge_vertices(e)[0]), std::uint32_t(mesh.edge_vertices(e)[1]), valences[e]);
   return CGAL::Hexahedral_remeshing::boundary_valence_agreement(c, prescribed);
+}
+
+inline std::string quantization_name(CGAL::Hexahedral_remeshing::Integer_grid_map_quantization q)
+{
+  switch(q) {
+  case CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::SEPARATION_PROGRAM: return "separation_program";
+  case CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::GREEDY_ROUNDING: return "greedy_rounding";
+  default: return "automatic";
+  }
 }
 
 // The map block of the JSON reports of parametrize and remesh.
@@ -108,6 +118,16 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("defects", m.defects.size())
       .value("transition_error", m.transition_error)
       .value("seconds", m.seconds);
+  json.begin("quantization")
+      .value("path", quantization_name(m.quantization))
+      .value("reason", m.quantization_reason)
+      .value("folds_after_rounding", m.folds_after_rounding)
+      .value("folds_after_separation", m.folds_after_separation)
+      .value("separation_programs", m.separation_rounds)
+      .value("separation_constraints", m.separation_constraints)
+      .value("separation_variables", m.separation_variables)
+      .value("separation_seconds", m.separation_seconds)
+      .end();
   std::vector<std::vector<long long> > interior, boundary;
   for(const auto& kv : c.interior_edge_valences) interior.push_back({kv.first, (long long)kv.second});
   for(const auto& kv : c.boundary_edge_valences) boundary.push_back({kv.first, (long long)kv.second});
@@ -134,6 +154,13 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
       << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, min det J "
       << std::setprecision(3) << m.min_relative_jacobian << std::defaultfloat << " of the target; " << m.integer_variables
       << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
+      << "  quantization        "
+      << (m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::SEPARATION_PROGRAM
+            ? "separation program: " + std::to_string(m.folds_after_rounding) + " folded tetrahedra after the rounding, " +
+                std::to_string(m.folds_after_separation) + " after " + std::to_string(m.separation_rounds) + " program(s) with " +
+                std::to_string(m.separation_constraints) + " separation constraint(s)"
+            : "greedy rounding" + (m.quantization_reason.empty() ? std::string() : " (" + m.quantization_reason + ")"))
+      << "\n"
       << "  map check           " << (c.is_integer_grid() ? "integer-grid" : "NOT integer-grid") << ", interior edges by valence "
       << valence_list(c.interior_edge_valences) << "; boundary edges by valence " << valence_list(c.boundary_edge_valences)
       << "; boundary valences of the map " << a.matched << "/" << a.total << " as prescribed"
@@ -166,7 +193,7 @@ inline int command_parametrize(const Arguments& args)
   const double band = 2 * HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
   const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, band);
   HR::Integer_grid_map map;
-  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress);
+  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization);
   progress.start("checking the map");
   const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
   const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, f.valences, check);

@@ -13,7 +13,9 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/cut_graph.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/dof_reduction.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/field_diagnostics.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_assembly.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_tags.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
@@ -55,12 +57,12 @@ enum quantization_time_limit_t { quantization_time_limit };
 /// `quantization`), and which way made it (`Integer_grid_map_result::quantization`).
 enum class Integer_grid_map_quantization {
   /// Greedy rounding, then, if the rounded map folds, the separation program where it folds; the
-  /// map with fewer folds is kept (as a parameter: the default).
+  /// program's map is kept if it does not fold (as a parameter: the default).
   AUTOMATIC,
   /// Greedy mixed-integer rounding only (one variable batch at a time, re-solving in between).
   GREEDY_ROUNDING,
   /// (reported) The map of the separation program: the rounded map folded, and the integer program
-  /// that keeps apart the entities it collapsed gave fewer folds.
+  /// that keeps apart the entities it collapsed gave a map without folds.
   SEPARATION_PROGRAM
 };
 
@@ -157,8 +159,8 @@ struct Integer_grid_map_result
   Integer_grid_map_quantization quantization = Integer_grid_map_quantization::GREEDY_ROUNDING;
   /// Why the separation program was not run, stopped, or not kept (empty with `GREEDY_ROUNDING` asked).
   std::string quantization_reason;
-  /// Tetrahedra with `det J <= 0` after the greedy rounding, and after the separation program (the
-  /// structurally flat ones left out; equal if the program did not run or was not kept).
+  /// Tetrahedra with `det J <= 0` after the greedy rounding, and the fewest after a separation
+  /// program (the structurally flat ones left out; equal if no program ran or none did better).
   std::size_t folds_after_rounding = 0, folds_after_separation = 0;
   /// Separation programs solved (Cbc), constraints and integer variables of the last one, their seconds.
   int separation_rounds = 0;
@@ -310,7 +312,6 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   typedef std::chrono::steady_clock Clock;
   typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  const internal::Octahedral_group& group = internal::octahedral_group();
   Integer_grid_map_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
 
@@ -358,31 +359,7 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   const double s = 1.0 / h;
 
   // Diagnostics of the field: non-meshable locations, frames disagreeing with the kept matchings, jogs.
-  auto point = [&](Index v) {
-    const auto& p = mesh.point(v);
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  };
-  for(Index e = 0; e < ne; ++e)
-    if(singularities.edge_valence[e] == 0) {
-      const auto& ev = mesh.edge_vertices(e);
-      r.defects.push_back({Integer_grid_map_defect::IMPROPER_EDGE, e, 0.5 * (point(ev[0]) + point(ev[1]))});
-    }
-  for(Index v : singularities.dangling_vertices) r.defects.push_back({Integer_grid_map_defect::DANGLING_END, v, point(v)});
-  for(Index v : singularities.zipper_vertices) r.defects.push_back({Integer_grid_map_defect::ZIPPER, v, point(v)});
-  for(Index f = 0; f < nf; ++f) {
-    if(mesh.is_boundary_face(f)) continue;
-    const auto& ft = mesh.face_tetrahedra(f);
-    if(internal::closest_matching(frames[ft[0]], frames[ft[1]]).index != matchings.face_matching[f]) ++r.disagreeing_faces;
-  }
-  std::vector<Index> jog_edges;
-  for(Index e = 0; e < ne; ++e) {
-    if(singularities.edge_valence[e] != 3 && singularities.edge_valence[e] != 5) continue;
-    const auto& ev = mesh.edge_vertices(e);
-    const Eigen::Vector3d d = (point(ev[1]) - point(ev[0])).normalized();
-    const Eigen::Vector3d axis = frames[mesh.edge_ring(e)[0]] * group.axis(singularities.edge_holonomy[e]);
-    if(std::abs(axis.dot(d)) < std::sqrt(0.5)) jog_edges.push_back(e);
-  }
-  r.jogs = jog_edges.size();
+  const std::vector<Index> jog_edges = internal::diagnose_field(mesh, frames, matchings, singularities, r);
 
   // 1. Cut graph.
   visitor.start_stage("cut");
@@ -588,56 +565,8 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   r.sanitize_move = internal::snap_to_dyadic_grid(y, integer_column);
   const Eigen::VectorXd x = P * y + x0;
 
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
-  map = Integer_grid_map();
-  map.source = mesh.source();
-  map.points.reserve(mesh.number_of_vertices());
-  for(Index v = 0; v < mesh.number_of_vertices(); ++v) {
-    const Eigen::Vector3d p = point(v);
-    map.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  map.tetrahedra.resize(nt);
-  map.parameters.resize(nt);
-  r.min_relative_jacobian = std::numeric_limits<double>::infinity();
-  std::vector<char> bad_tet(nt, 0);
-  for(Index tt = 0; tt < nt; ++tt) {
-    const auto& tv = mesh.tetrahedron_vertices(tt);
-    std::array<Kernel::Point_3, 4> u;
-    for(int c = 0; c < 4; ++c) {
-      map.tetrahedra[tt][c] = tv[c];
-      map.parameters[tt][c] = x.segment<3>(Eigen::Index(12 * tt + 3 * c));
-      u[c] = Kernel::Point_3(map.parameters[tt][c][0], map.parameters[tt][c][1], map.parameters[tt][c][2]);
-    }
-    const CGAL::Orientation o = CGAL::orientation(u[0], u[1], u[2], u[3]);
-    if(o == CGAL::NEGATIVE) { ++r.inverted_tetrahedra; bad_tet[tt] = 1; }
-    else if(o == CGAL::COPLANAR) { ++r.degenerate_tetrahedra; bad_tet[tt] = 1; }
-    r.min_relative_jacobian = (std::min)(r.min_relative_jacobian, internal::map_jacobian(geometry, x, tt).determinant() / (s * s * s));
-  }
-  for(Index e : jog_edges)
-    for(Index tt : mesh.edge_ring(e))
-      if(bad_tet[tt]) { ++r.degenerate_jogs; break; }
-  for(Index f = 0; f < nf; ++f) {
-    if(mesh.is_boundary_face(f)) continue;
-    Integer_grid_map_transition tr;
-    const auto& ft = mesh.face_tetrahedra(f);
-    tr.tetrahedra = {{ft[0], ft[1]}};
-    tr.rotation = internal::transition_rotation(matchings, f);
-    if(cut[f])
-      for(int k = 0; k < 3; ++k) {
-        const std::uint32_t jv = first_jump + 3 * cut_index[f] + std::uint32_t(k);
-        const auto e = expression(jv);
-        double value = e.constant;
-        for(const Term& term : e.terms) value += term.coef * y[Eigen::Index(column[term.var])];
-        tr.translation[k] = int(std::lround(value));
-      }
-    const Eigen::Matrix3d Rm = group.matrix(tr.rotation);
-    for(Index v : mesh.face_vertices(f)) {
-      const Eigen::Vector3d& u0 = map.parameters[ft[0]][internal::local_corner(mesh, ft[0], v)];
-      const Eigen::Vector3d& u1 = map.parameters[ft[1]][internal::local_corner(mesh, ft[1], v)];
-      r.transition_error = (std::max)(r.transition_error, (u0 - (Rm * u1 + tr.translation.cast<double>())).cwiseAbs().maxCoeff());
-    }
-    map.transitions.push_back(tr);
-  }
+  internal::assemble_map(mesh, matchings, cut, geometry, s, x, jog_edges,
+                         [&](Index f, int k) { return int(std::lround(jump_form(f, k)(y))); }, map, r);
   r.sanitize_seconds = seconds_since(t);
   visitor.end_stage("sanitizing", r.sanitize_seconds);
 

@@ -86,7 +86,8 @@ inline void name_failed_stage(Hexahedral_remeshing_result& r)
     r.failed_stage = "rounding";
     r.failure_reason = "the rounded map folds " + std::to_string(r.map.rounded_inverted_tetrahedra) + " tetrahedra; " +
                        std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
-                       " flat after the repair of the folds";
+                       " flat after the repair of the folds" +
+                       (r.map.quantization_reason.empty() ? std::string() : "; separation: " + r.map.quantization_reason);
   } else if(r.extraction.incomplete_cells + r.extraction.untraced_corners > 0) {
     r.failed_stage = "extraction";
     r.failure_reason = std::to_string(r.extraction.incomplete_cells) + " cells and " + std::to_string(r.extraction.untraced_corners) +
