@@ -396,6 +396,19 @@ i = tok.index('Vertices'); n = int(tok[i + 1])
 z = [float(tok[i + 4 + 4 * k]) for k in range(n)]
 sys.exit(0 if all(abs(v) < 1e-9 or abs(v - 0.03) < 1e-9 for v in z) else 1)
 PY
+# Thin features (issue 27): a fin 0.1 thick and a slot 0.1 wide at hex edge 0.3. The greedy rounding
+# collapses them (exit 4, failed at rounding); the separation program gives a valid hex mesh.
+for part in fin_block slotted_block; do
+  "$hexmesh" remesh "$inputs/$part.step" --target-edge-length 0.3 --greedy-rounding --out "$tmp/$part.greedy.mesh" \
+    --json "$tmp/$part.greedy.json" --quiet > /dev/null 2> "$tmp/err"
+  rc=$?
+  [ $rc -eq 4 ] && grep -q '"failed_stage": "rounding"' "$tmp/$part.greedy.json" \
+    || fail "$part with --greedy-rounding: expected exit 4 at rounding, got $rc: $(tail -1 "$tmp/err")"
+  "$hexmesh" remesh "$inputs/$part.step" --target-edge-length 0.3 --out "$tmp/$part.mesh" --json "$tmp/$part.json" \
+    --quiet > /dev/null 2> "$tmp/err" || fail "$part: $(tail -1 "$tmp/err")"
+  python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/$part.mesh" > "$tmp/check" || fail "$part: $(cat "$tmp/check")"
+  grep -q '"path": "separation_program"' "$tmp/$part.json" || fail "$part: the map does not come from the separation program"
+done
 fi
 
 # Curved sharp edges (issue 29): the feature coverage of the report agrees with an independent measure

@@ -262,6 +262,21 @@ def cad_parts():
     gmsh.model.occ.cut([(3, 3)], [(3, 4)], 5)
     gmsh.model.occ.synchronize()
     gmsh.write(path("stepped_shaft.step"))
+    # a 4 x 2 x 1 block with a fin 0.1 thick and 1 tall on top, and a 4 x 2 x 2 block with a slot 0.1
+    # wide and 1 deep: at hex edge 0.3 the greedy rounding collapses the fin (its two faces on one
+    # integer plane) and the slot; the separation program keeps one layer (issue 27)
+    gmsh.model.add("fin")
+    gmsh.model.occ.addBox(0, 0, 0, 4, 2, 1, 1)
+    gmsh.model.occ.addBox(1.95, 0, 1, 0.1, 2, 1, 2)
+    gmsh.model.occ.fuse([(3, 1)], [(3, 2)])
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("fin_block.step"))
+    gmsh.model.add("slot")
+    gmsh.model.occ.addBox(0, 0, 0, 4, 2, 2, 1)
+    gmsh.model.occ.addBox(1.95, -1, 1, 0.1, 4, 2, 2)
+    gmsh.model.occ.cut([(3, 1)], [(3, 2)])
+    gmsh.model.occ.synchronize()
+    gmsh.write(path("slotted_block.step"))
     gmsh.finalize()
 
 
