@@ -161,10 +161,16 @@ struct Integer_grid_map_result
   std::string quantization_reason;
   /// Tetrahedra with `det J <= 0` after the greedy rounding, and the fewest after a separation
   /// program (the structurally flat ones left out; equal if no program ran or none did better).
-  std::size_t folds_after_rounding = 0, folds_after_separation = 0;
+  std::size_t folds_after_rounding = 0;
+  /// The fewest folded tetrahedra after a separation program (as `folds_after_rounding` if none did better).
+  std::size_t folds_after_separation = 0;
   /// Separation programs solved (Cbc), constraints and integer variables of the last one, their seconds.
   int separation_rounds = 0;
-  std::size_t separation_constraints = 0, separation_variables = 0;
+  /// Separation constraints of the last program.
+  std::size_t separation_constraints = 0;
+  /// Integer variables of the last program.
+  std::size_t separation_variables = 0;
+  /// Seconds of the programs (Cbc).
   double separation_seconds = 0;
   /// Stiffening rounds run (0 if the local untangling of the rounded map repaired it).
   int stiffening_rounds = 0;
