@@ -566,10 +566,6 @@ TEST(IntegerGridMap, ThinSlabKeepsOneLayer)
   EXPECT_EQ(greedy.report.quantization, HR::Integer_grid_map_quantization::GREEDY_ROUNDING);
   const Map_run r = run(m, HR::parameters::target_edge_length(0.5));
   print("slab, separation", r);
-  std::printf("  %s; folds %zu -> %zu, %d programs, %zu constraints, %zu variables, %.3f s\n",
-              r.report.quantization_reason.c_str(), r.report.folds_after_rounding, r.report.folds_after_separation,
-              r.report.separation_rounds, r.report.separation_constraints, r.report.separation_variables,
-              r.report.separation_seconds);
   EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
   EXPECT_GE(r.report.separation_constraints, 1u);
   EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
@@ -587,10 +583,6 @@ TEST(IntegerGridMap, NarrowSlotKeepsItsTwoConcaveEdgesApart)
   print("slot, greedy rounding", greedy);
   const Map_run r = run(m, HR::parameters::target_edge_length(0.5));
   print("slot, separation", r);
-  std::printf("  %s; folds %zu -> %zu, %d programs, %zu constraints, %zu variables, %.3f s\n",
-              r.report.quantization_reason.c_str(), r.report.folds_after_rounding, r.report.folds_after_separation,
-              r.report.separation_rounds, r.report.separation_constraints, r.report.separation_variables,
-              r.report.separation_seconds);
   std::size_t concave = 0;
   for(Index e : m.boundary_edges()) concave += r.field.valences[e] == 3;
   EXPECT_GT(concave, 0u);
