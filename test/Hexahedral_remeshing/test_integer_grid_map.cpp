@@ -12,6 +12,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <gtest/gtest.h>
@@ -20,6 +21,7 @@
 #include "synthetic_models.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -542,12 +544,13 @@ void print(const char* name, const Map_run& r)
 {
   std::printf("%-24s status %d inverted %zu degenerate %zu (flat by construction %zu) jogs %zu (degenerate %zu) "
               "valences %zu/%zu interior mismatches %zu cut %zu int %zu rounds %d stiffening %d untangled %d "
-              "disagreeing faces %zu h %.3g %.2f s quantization %s folds %zu->%zu programs %d (%s)\n",
+              "disagreeing faces %zu h %.3g %.2f s seamless %zu->%zu folds (injective %d) quantization %s folds %zu->%zu programs %d (%s)\n",
               name, int(r.report.status), r.check.inverted, r.check.degenerate, r.report.structurally_flat_tetrahedra,
               r.report.jogs, r.report.degenerate_jogs, r.check.boundary_edges - r.check.valence_mismatches,
               r.check.boundary_edges, r.check.interior_valence_mismatches, r.report.cut_faces,
               r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
               int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds,
+              r.report.relaxed_inverted_tetrahedra, r.report.seamless_folds.size(), int(r.report.seamless_injective),
               r.report.quantization == HR::Integer_grid_map_quantization::SEPARATION_PROGRAM ? "separation" : "greedy",
               r.report.folds_after_rounding, r.report.folds_after_separation, r.report.separation_rounds,
               r.report.quantization_reason.c_str());
@@ -632,6 +635,95 @@ TEST(IntegerGridMap, CylinderWithFourValenceThreeCurves)
   // 23 jogs; one tetrahedron stays inverted next to the flat ones; the interior angle sums are
   // undefined at the edges of flat tetrahedra
   expect_at_most(r.check, Known{1, 47, 0, 61});
+}
+
+// Independent check of a seamless map from its corner parameters (issue 27 step 1): orientation of
+// every tetrahedron with exact rational arithmetic (Epeck), the translation u0 - R u1 of every
+// interior face the same at its three vertices (R: the rotation of the face's kept matching, taken
+// from the integer map's transitions), every boundary face on a plane of one parameter axis.
+struct Seamless_check
+{
+  std::size_t not_positive = 0;
+  double transition_spread = 0;
+  std::size_t boundary_faces = 0, boundary_faces_off_planes = 0;
+};
+
+Seamless_check check_seamless_map(const HR::Integer_grid_map& map, const std::vector<std::array<Eigen::Vector3d, 4> >& u)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  Seamless_check c;
+  auto point = [&](std::size_t t, int k) { return EK::Point_3(u[t][k][0], u[t][k][1], u[t][k][2]); };
+  for(std::size_t t = 0; t < u.size(); ++t)
+    c.not_positive += CGAL::orientation(point(t, 0), point(t, 1), point(t, 2), point(t, 3)) != CGAL::POSITIVE;
+  auto corner = [&](std::uint32_t t, std::uint32_t v) { return int(std::find(map.tetrahedra[t].begin(), map.tetrahedra[t].end(), v) - map.tetrahedra[t].begin()); };
+  std::set<std::array<std::uint32_t, 3> > interior;
+  for(const auto& tr : map.transitions) {
+    const auto& a = map.tetrahedra[tr.tetrahedra[0]];
+    std::vector<std::uint32_t> shared;
+    for(std::uint32_t v : a)
+      if(corner(tr.tetrahedra[1], v) < 4) shared.push_back(v);
+    EXPECT_EQ(shared.size(), 3u);
+    std::array<std::uint32_t, 3> key{{shared[0], shared[1], shared[2]}};
+    std::sort(key.begin(), key.end());
+    interior.insert(key);
+    const Eigen::Matrix3d R = HR::internal::octahedral_group().matrix(tr.rotation);
+    const Eigen::Vector3d t0 = u[tr.tetrahedra[0]][corner(tr.tetrahedra[0], shared[0])] - R * u[tr.tetrahedra[1]][corner(tr.tetrahedra[1], shared[0])];
+    for(std::uint32_t v : shared) {
+      const Eigen::Vector3d tv = u[tr.tetrahedra[0]][corner(tr.tetrahedra[0], v)] - R * u[tr.tetrahedra[1]][corner(tr.tetrahedra[1], v)];
+      c.transition_spread = (std::max)(c.transition_spread, (tv - t0).cwiseAbs().maxCoeff());
+    }
+  }
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t)
+    for(int skip = 0; skip < 4; ++skip) {
+      std::array<std::uint32_t, 3> key;
+      std::array<int, 3> corners;
+      for(int k = 0, j = 0; k < 4; ++k)
+        if(k != skip) { corners[j] = k; key[j++] = map.tetrahedra[t][k]; }
+      std::sort(key.begin(), key.end());
+      if(interior.count(key)) continue;
+      ++c.boundary_faces;
+      bool on_plane = false;
+      for(int axis = 0; axis < 3; ++axis)
+        on_plane = on_plane || (u[t][corners[0]][axis] == u[t][corners[1]][axis] && u[t][corners[0]][axis] == u[t][corners[2]][axis]);
+      c.boundary_faces_off_planes += !on_plane;
+    }
+  return c;
+}
+
+// Issue 27 step 1: the seamless map, before any rounding, is reported injective exactly when every
+// tetrahedron is positively oriented, and it is seamless (transitions, boundary planes) whatever it
+// is. On the shapes without jogs it is injective; the cylinder's jogs flatten tetrahedra in every
+// seamless map (three corners on one singular line), and the report says where.
+TEST(IntegerGridMap, SeamlessMapIsInjectiveAndSeamless)
+{
+  struct Case { std::string name; Mesh mesh; double h; bool injective; };
+  std::vector<Case> cases;
+  cases.push_back({"cube", load(example_data + "/cube.off", 0.002), 1.0 / 3, true});
+  cases.push_back({"box", from_off("hexrem_igm_box", box_off(2, 1, 0.5), 0.002), 0.25, true});
+  cases.push_back({"l_prism", from_off("hexrem_igm_l_prism", l_prism_off(), 0.005), 0.25, true});
+  cases.push_back({"thin slab", from_off("hexrem_igm_slab", box_off(2, 2, 0.2), 0.0005), 0.5, true});
+  cases.push_back({"narrow slot", from_off("hexrem_igm_slot", u_channel_off(0.2), 0.0005), 0.5, true});
+  cases.push_back({"cylinder", load(example_data + "/cylinder.off", 0.002), 0.25, false});
+  for(const Case& k : cases) {
+    SCOPED_TRACE(k.name);
+    std::vector<std::array<Eigen::Vector3d, 4> > u;
+    const Map_run r = run(k.mesh, HR::parameters::target_edge_length(k.h, HR::parameters::seamless_map_parameters(&u)));
+    ASSERT_EQ(u.size(), k.mesh.number_of_tetrahedra());
+    const Seamless_check c = check_seamless_map(r.map, u);
+    std::printf("%-12s seamless map: minimizer %zu inverted, after untangling %zu inverted %zu flat (independent: %zu), "
+                "injective %d, untangled %d, transition spread %.3g, boundary faces off planes %zu/%zu, %.3f s\n",
+                k.name.c_str(), r.report.relaxed_inverted_tetrahedra, r.report.seamless_inverted_tetrahedra,
+                r.report.seamless_degenerate_tetrahedra, c.not_positive, int(r.report.seamless_injective),
+                int(r.report.seamless_untangling_ran), c.transition_spread, c.boundary_faces_off_planes, c.boundary_faces,
+                r.report.seamless_seconds);
+    EXPECT_EQ(c.not_positive, r.report.seamless_folds.size());
+    EXPECT_EQ(c.not_positive, r.report.seamless_inverted_tetrahedra + r.report.seamless_degenerate_tetrahedra);
+    EXPECT_EQ(r.report.seamless_injective, c.not_positive == 0);
+    EXPECT_EQ(r.report.seamless_injective, k.injective);
+    EXPECT_EQ(c.transition_spread, 0.0); // snapped: the transitions hold exactly
+    EXPECT_EQ(c.boundary_faces_off_planes, 0u);
+    if(!k.injective) EXPECT_GE(c.not_positive, r.report.structurally_flat_tetrahedra);
+  }
 }
 
 // Known failure: without the band, the valence-3 curve of the field runs along the 10-degree edge (its

@@ -15,7 +15,11 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/dof_reduction.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/field_diagnostics.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fold_repair.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_assembly.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_elimination.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_quantization.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_tags.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
@@ -34,6 +38,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -50,6 +55,7 @@ enum maximum_stiffening_iterations_t { maximum_stiffening_iterations };
 enum untangling_t { untangling };
 enum quantization_t { quantization };
 enum quantization_time_limit_t { quantization_time_limit };
+enum seamless_map_parameters_t { seamless_map_parameters };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -79,12 +85,16 @@ template <class T> unspecified_type untangling(const T& value);
 template <class T> unspecified_type quantization(const T& value);
 /// Integer-grid map: seconds the separation programs may take together (`double`, default 60).
 template <class T> unspecified_type quantization_time_limit(const T& value);
+/// Integer-grid map: receives the corner parameters of the seamless map, before any rounding
+/// (`std::vector<std::array<Eigen::Vector3d, 4> >*`, one array per tetrahedron; default none).
+template <class T> unspecified_type seamless_map_parameters(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_stiffening_iterations)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(untangling)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization_time_limit)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(seamless_map_parameters)
 #endif
 } // namespace parameters
 
@@ -151,8 +161,22 @@ struct Integer_grid_map_result
   int rounding_rounds = 0;
   /// Largest distance to an integer of a variable when it was rounded.
   double max_rounding = 0;
-  /// Tetrahedra with `det J <= 0` (floating point) in the continuous relaxation, before rounding.
+  /// Tetrahedra with `det J <= 0` (floating point) in the minimizer of the seamless map (every
+  /// variable continuous), before its untangling.
   std::size_t relaxed_inverted_tetrahedra = 0;
+  /// The seamless map before any rounding, after its untangling and snapping: tetrahedra whose
+  /// parameter points are negatively oriented (exact `CGAL::orientation`).
+  std::size_t seamless_inverted_tetrahedra = 0;
+  /// The seamless map: tetrahedra whose parameter points are coplanar (exact; includes the
+  /// structurally flat ones, which no seamless map with these constraints can open).
+  std::size_t seamless_degenerate_tetrahedra = 0;
+  /// True if every tetrahedron of the seamless map is positively oriented (exact): the map is
+  /// locally injective before the rounding.
+  bool seamless_injective = false;
+  /// Where the seamless map is not injective: its inverted and flat tetrahedra (indices in the mesh).
+  std::vector<std::uint32_t> seamless_folds;
+  /// True if the foldover-free untangling of the seamless map ran (its minimizer folded).
+  bool seamless_untangling_ran = false;
   /// Tetrahedra with `det J <= 0` (floating point) after the quantization, before the repair.
   std::size_t rounded_inverted_tetrahedra = 0;
   /// The way the integer values were made: `GREEDY_ROUNDING` or `SEPARATION_PROGRAM`.
@@ -204,7 +228,9 @@ struct Integer_grid_map_result
   double reduction_seconds = 0;
   /// Seconds of the constraint elimination and the assembly of the reduced system.
   double elimination_seconds = 0;
-  /// Seconds of the greedy rounding.
+  /// Seconds of the seamless map: its solve, untangling, snapping and exact check.
+  double seamless_seconds = 0;
+  /// Seconds of the quantization (greedy rounding, separation programs).
   double rounding_seconds = 0;
   /// Seconds of the stiffening.
   double stiffening_seconds = 0;
@@ -218,7 +244,7 @@ struct Integer_grid_map_result
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of `compute_integer_grid_map()`: called when a stage starts and ends (`"cut"`,
-/// `"reduction"`, `"elimination"`, `"rounding"`, `"untangling"`, `"stiffening"`, `"untangling"`,
+/// `"reduction"`, `"elimination"`, `"seamless_map"`, `"rounding"`, `"untangling"`, `"stiffening"`, `"untangling"`,
 /// `"sanitizing"`; the repair stages only while tetrahedra are inverted: the untangling runs first
 /// around the folds of the rounded map, and the stiffening and a second untangling only if folds remain).
 struct Integer_grid_map_visitor
@@ -240,6 +266,66 @@ double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const 
   return std::cbrt(volume / 2000.0);
 }
 
+// Frames, matchings and graph sized for `mesh`, matchings that fit its faces; Input_error otherwise.
+template <class Traits>
+void check_map_inputs(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                      const Matchings& matchings, const Singularity_graph& singularities)
+{
+  const std::string source = mesh.source().empty() ? std::string("<memory>") : mesh.source();
+  const std::size_t nt = mesh.number_of_tetrahedra(), nf = mesh.number_of_faces(), ne = mesh.number_of_edges();
+  auto fail = [&](const std::string& what) { throw Input_error(source, 0, "compute_integer_grid_map: " + what); };
+  if(frames.size() != nt)
+    fail(std::to_string(frames.size()) + " frames for " + std::to_string(nt) + " tetrahedra (frames of another mesh?)");
+  if(matchings.face_matching.size() != nf)
+    fail(std::to_string(matchings.face_matching.size()) + " matchings for " + std::to_string(nf) + " faces (matchings of another mesh?)");
+  if(singularities.edge_valence.size() != ne || singularities.edge_holonomy.size() != ne)
+    fail("singularity graph with " + std::to_string(singularities.edge_valence.size()) + " edges for " + std::to_string(ne) +
+         " edges (graph of another mesh?)");
+  for(std::uint32_t f = 0; f < nf; ++f)
+    if((matchings.face_matching[f] < 0) != mesh.is_boundary_face(f) || matchings.face_matching[f] >= 24)
+      fail("face " + std::to_string(f) + ": matching " + std::to_string(matchings.face_matching[f]) +
+           " does not fit the mesh (matchings of another mesh?)");
+}
+
+// The named parameters of compute_integer_grid_map(), checked.
+struct Map_options
+{
+  double h = 0;
+  int maximum_stiffening = 20;
+  bool untangle = true;
+  int untangling_rings = 3; // the local untangling's reach around the folds (tets through shared vertices)
+  Integer_grid_map_quantization quantization = Integer_grid_map_quantization::AUTOMATIC;
+  double quantization_time_limit = 60;
+  std::vector<std::array<Eigen::Vector3d, 4> >* seamless_parameters = nullptr;
+};
+
+template <class Traits, class NamedParameters>
+Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::string source = mesh.source().empty() ? std::string("<memory>") : mesh.source();
+  Map_options o;
+  o.h = choose_parameter(get_parameter(np, internal_np::target_edge_length), default_target_edge_length(mesh, geometry));
+  if(!(o.h > 0) || !std::isfinite(o.h)) {
+    std::ostringstream os;
+    os << "compute_integer_grid_map: target_edge_length must be a positive finite length, got " << o.h;
+    throw Input_error(source, 0, os.str());
+  }
+  o.maximum_stiffening = choose_parameter(get_parameter(np, internal_np::maximum_stiffening_iterations), 20);
+  o.untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
+  o.quantization = choose_parameter(get_parameter(np, internal_np::quantization), Integer_grid_map_quantization::AUTOMATIC);
+  o.quantization_time_limit = choose_parameter(get_parameter(np, internal_np::quantization_time_limit), 60.0);
+  if(!(o.quantization_time_limit >= 0) || !std::isfinite(o.quantization_time_limit))
+    throw Input_error(source, 0, "compute_integer_grid_map: quantization_time_limit must be a finite number of seconds >= 0");
+  o.seamless_parameters = choose_parameter(get_parameter(np, internal_np::seamless_map_parameters),
+                                           static_cast<std::vector<std::array<Eigen::Vector3d, 4> >*>(nullptr));
+  if(o.quantization == Integer_grid_map_quantization::SEPARATION_PROGRAM)
+    throw Input_error(source, 0, "compute_integer_grid_map: quantization is AUTOMATIC or GREEDY_ROUNDING "
+                                 "(SEPARATION_PROGRAM is reported, not asked)");
+  return o;
+}
+
 } // namespace internal
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -252,7 +338,9 @@ double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const 
 ///
 /// Steps: cut graph (dual spanning tree, pruned, singular and boundary edges protected); signed
 /// union-find of the 12 corner scalars per tetrahedron across uncut faces; integer tags; exact
-/// elimination of the cut constraints; greedy mixed-integer rounding with a CHOLMOD factorization
+/// elimination of the cut constraints; the seamless map (every variable continuous), untangled
+/// with the foldover-free solver where it folds, snapped, and checked with exact orientations
+/// (`seamless_injective`, `seamless_folds`); greedy mixed-integer rounding with a CHOLMOD factorization
 /// analysed once; where the rounded map folds, separation constraints between the entities the
 /// rounding collapsed (boundary planes, singular and feature lines that the seamless map keeps apart
 /// along an axis) and an integer program solved with COIN-OR Cbc that satisfies them with the fewest
@@ -294,6 +382,11 @@ double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const 
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{seamless_map_parameters}
+///     \cgalParamDescription{receives the corner parameters (in hex edges) of the seamless map before any rounding, after its untangling: one array of four points per tetrahedron, in the order of its vertices}
+///     \cgalParamType{`std::vector<std::array<Eigen::Vector3d, 4> >*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress callbacks}
 ///     \cgalParamType{a class with the member functions of `Integer_grid_map_visitor`}
@@ -314,274 +407,78 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::get_parameter_reference;
-  typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
   typedef std::chrono::steady_clock Clock;
-  typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
-  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   Integer_grid_map_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  const std::string source = mesh.source().empty() ? std::string("<memory>") : mesh.source();
-  const std::size_t nt = mesh.number_of_tetrahedra(), nf = mesh.number_of_faces(), ne = mesh.number_of_edges();
-  if(frames.size() != nt)
-    throw Input_error(source, 0, "compute_integer_grid_map: " + std::to_string(frames.size()) + " frames for " +
-                                   std::to_string(nt) + " tetrahedra (frames of another mesh?)");
-  if(matchings.face_matching.size() != nf)
-    throw Input_error(source, 0, "compute_integer_grid_map: " + std::to_string(matchings.face_matching.size()) +
-                                   " matchings for " + std::to_string(nf) + " faces (matchings of another mesh?)");
-  if(singularities.edge_valence.size() != ne || singularities.edge_holonomy.size() != ne)
-    throw Input_error(source, 0, "compute_integer_grid_map: singularity graph with " +
-                                   std::to_string(singularities.edge_valence.size()) + " edges for " +
-                                   std::to_string(ne) + " edges (graph of another mesh?)");
-  for(Index f = 0; f < nf; ++f)
-    if((matchings.face_matching[f] < 0) != mesh.is_boundary_face(f) || matchings.face_matching[f] >= 24)
-      throw Input_error(source, 0, "compute_integer_grid_map: face " + std::to_string(f) +
-                                     ": matching " + std::to_string(matchings.face_matching[f]) +
-                                     " does not fit the mesh (matchings of another mesh?)");
-
-  Integer_grid_map_result r;
+  internal::check_map_inputs(mesh, frames, matchings, singularities);
   const auto start = Clock::now();
+  Integer_grid_map_result r;
   const internal::Map_geometry geometry = internal::compute_map_geometry(mesh);
-  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length),
-                                    internal::default_target_edge_length(mesh, geometry));
-  if(!(h > 0) || !std::isfinite(h)) {
-    std::ostringstream os;
-    os << "compute_integer_grid_map: target_edge_length must be a positive finite length, got " << h;
-    throw Input_error(source, 0, os.str());
-  }
-  const int max_stiffening = choose_parameter(get_parameter(np, internal_np::maximum_stiffening_iterations), 20);
-  const bool untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
-  // the local untangling's reach around the folds (tets through shared vertices)
-  const int untangling_rings = 3;
-  const Integer_grid_map_quantization quantization =
-    choose_parameter(get_parameter(np, internal_np::quantization), Integer_grid_map_quantization::AUTOMATIC);
-  const double quantization_time_limit = choose_parameter(get_parameter(np, internal_np::quantization_time_limit), 60.0);
-  if(!(quantization_time_limit >= 0) || !std::isfinite(quantization_time_limit))
-    throw Input_error(source, 0, "compute_integer_grid_map: quantization_time_limit must be a finite number of seconds >= 0");
-  if(quantization == Integer_grid_map_quantization::SEPARATION_PROGRAM)
-    throw Input_error(source, 0, "compute_integer_grid_map: quantization is AUTOMATIC or GREEDY_ROUNDING "
-                                 "(SEPARATION_PROGRAM is reported, not asked)");
-  r.target_edge_length = h;
-  const double s = 1.0 / h;
+  const internal::Map_options o = internal::map_options(mesh, geometry, np);
+  r.target_edge_length = o.h;
+  const double s = 1.0 / o.h;
+  const std::vector<std::uint32_t> jog_edges = internal::diagnose_field(mesh, frames, matchings, singularities, r);
+  internal::Map_stage_timer<decltype(visitor)> stage{visitor};
 
-  // Diagnostics of the field: non-meshable locations, frames disagreeing with the kept matchings, jogs.
-  const std::vector<Index> jog_edges = internal::diagnose_field(mesh, frames, matchings, singularities, r);
+  stage.start("cut");
+  const internal::Map_cut cut = internal::compute_map_cut(mesh, singularities.edge_holonomy, internal::Octahedral_group::identity_index);
+  r.cut_faces = cut.cut_faces;
+  r.cut_seconds = stage.end();
 
-  // 1. Cut graph.
-  visitor.start_stage("cut");
-  auto t = Clock::now();
-  std::vector<char> protected_edge(ne, 0), singular_edge(ne, 0);
-  for(Index e = 0; e < ne; ++e) {
-    if(mesh.is_boundary_edge(e)) { protected_edge[e] = 1; continue; }
-    if(singularities.edge_holonomy[e] != internal::Octahedral_group::identity_index) protected_edge[e] = singular_edge[e] = 1;
-  }
-  const std::vector<char> cut = internal::compute_cut_faces(mesh, protected_edge, singular_edge);
-  std::vector<std::uint32_t> cut_index(nf, std::uint32_t(-1));
-  for(Index f = 0; f < nf; ++f)
-    if(cut[f]) cut_index[f] = std::uint32_t(r.cut_faces++);
-  r.cut_seconds = seconds_since(t);
-  visitor.end_stage("cut", r.cut_seconds);
+  stage.start("reduction");
+  const internal::Map_dofs dofs = internal::reduce_map_variables(mesh, frames, matchings, singularities, cut.cut, r.sign_contradictions);
+  r.reduction_seconds = stage.end();
 
-  // 2. Variable reduction and integer tags.
-  visitor.start_stage("reduction");
-  t = Clock::now();
-  internal::Signed_union_find uf(12 * nt);
-  r.sign_contradictions = internal::glue_uncut_faces(mesh, matchings, cut, uf);
-  std::vector<char> integer_scalar(12 * nt, 0);
-  internal::tag_boundary_planes(mesh, frames, uf, integer_scalar);
-  internal::tag_singular_lines(mesh, matchings, singularities, uf, integer_scalar);
-  const internal::Map_dofs dofs = internal::label_dofs(uf, integer_scalar);
-  r.reduction_seconds = seconds_since(t);
-  visitor.end_stage("reduction", r.reduction_seconds);
-
-  // 3. Exact elimination of the cut constraints.
-  visitor.start_stage("elimination");
-  t = Clock::now();
-  internal::Constraint_elimination elimination;
-  for(std::size_t d = 0; d < dofs.number_of_dofs; ++d) elimination.add_variable(dofs.integer[d] != 0);
-  const std::uint32_t first_jump = std::uint32_t(dofs.number_of_dofs);
-  for(std::size_t k = 0; k < 3 * r.cut_faces; ++k) elimination.add_variable(true);
-  for(std::size_t d = 0; d < dofs.number_of_dofs; ++d)
-    if(dofs.contradicted[d]) elimination.fix(std::uint32_t(d), 0.0);
-  // Pin one corner per connected component (the one with the most integer coordinates) at 0: the
-  // energy does not see translations.
-  {
-    std::vector<int> best(mesh.number_of_components(), -1);
-    std::vector<std::uint32_t> best_corner(mesh.number_of_components(), 0);
-    for(Index tt = 0; tt < nt; ++tt)
-      for(int c = 0; c < 4; ++c) {
-        int count = 0;
-        for(int k = 0; k < 3; ++k) count += dofs.integer[dofs.dof[internal::map_scalar(tt, c, k)]];
-        const Index comp = mesh.tetrahedron_component(tt);
-        if(count > best[comp]) { best[comp] = count; best_corner[comp] = 4 * tt + std::uint32_t(c); }
-      }
-    for(std::size_t comp = 0; comp < best.size(); ++comp)
-      for(int k = 0; k < 3; ++k) {
-        const std::uint32_t d = dofs.dof[internal::map_scalar(best_corner[comp] / 4, int(best_corner[comp] % 4), k)];
-        if(elimination.is_free(d)) elimination.fix(d, 0.0);
-      }
-  }
-  typedef internal::Constraint_elimination::Term Term;
-  for(Index f = 0; f < nf; ++f) {
-    if(!cut[f]) continue;
-    const auto& ft = mesh.face_tetrahedra(f);
-    const int R = internal::transition_rotation(matchings, f);
-    for(Index v : mesh.face_vertices(f)) {
-      const int c0 = internal::local_corner(mesh, ft[0], v), c1 = internal::local_corner(mesh, ft[1], v);
-      for(int k = 0; k < 3; ++k) {
-        const auto [col, sign] = internal::transition_row(R, k);
-        const std::uint32_t a = internal::map_scalar(ft[0], c0, k), b = internal::map_scalar(ft[1], c1, col);
-        // x_a - sign x_b - tau = 0
-        const std::vector<Term> row = {Term{dofs.dof[a], double(dofs.sign[a])},
-                                       Term{dofs.dof[b], -double(sign * dofs.sign[b])},
-                                       Term{first_jump + 3 * cut_index[f] + std::uint32_t(k), -1.0}};
-        elimination.add_row(row, 0.0);
-      }
-    }
-  }
-  r.inconsistent_constraints = elimination.inconsistent_rows() + elimination.unresolved_rows();
-
-  // x = P y + x0 over the free variables.
-  std::vector<std::int64_t> column(elimination.number_of_variables(), -1);
-  std::vector<char> integer_column;
-  for(std::uint32_t v = 0; v < elimination.number_of_variables(); ++v)
-    if(elimination.is_free(v)) {
-      column[v] = std::int64_t(integer_column.size());
-      integer_column.push_back(elimination.is_integer(v) ? 1 : 0);
-    }
-  const Eigen::Index m = Eigen::Index(integer_column.size());
-  r.variables = std::size_t(m);
-  for(char c : integer_column) r.integer_variables += (c != 0);
-  auto expression = [&](std::uint32_t v) {
-    internal::Constraint_elimination::Expression e;
-    if(elimination.is_free(v)) e.terms.push_back(Term{v, 1.0});
-    else e = elimination.expand(v);
-    return e;
-  };
-  std::vector<internal::Constraint_elimination::Expression> dof_expression(dofs.number_of_dofs);
-  for(std::uint32_t d = 0; d < dofs.number_of_dofs; ++d) dof_expression[d] = expression(d);
-  Row_matrix P(Eigen::Index(12 * nt), m);
-  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(Eigen::Index(12 * nt));
-  {
-    std::vector<Eigen::Triplet<double> > triplets;
-    triplets.reserve(12 * nt * 2);
-    for(std::size_t i = 0; i < 12 * nt; ++i) {
-      const auto& e = dof_expression[dofs.dof[i]];
-      const double sg = dofs.sign[i];
-      x0[Eigen::Index(i)] = sg * e.constant;
-      for(const Term& term : e.terms) triplets.emplace_back(int(i), int(column[term.var]), sg * term.coef);
-    }
-    P.setFromTriplets(triplets.begin(), triplets.end());
-  }
+  stage.start("elimination");
+  internal::Reduced_map reduced = internal::eliminate_cut_constraints(mesh, matchings, cut.cut, cut.cut_index, cut.cut_faces, dofs);
+  const auto& P = reduced.P;
+  const auto& x0 = reduced.x0;
+  r.inconsistent_constraints = reduced.inconsistent_rows;
+  r.variables = reduced.integer_column.size();
+  for(char c : reduced.integer_column) r.integer_variables += (c != 0);
   Eigen::SparseMatrix<double> H;
   Eigen::VectorXd rhs;
   internal::assemble_reduced_system(geometry, frames, s, std::vector<double>(), P, x0, H, rhs);
   // what neither the stiffening nor the untangling can repair
   const std::vector<char> flat = internal::structurally_flat_tetrahedra(geometry, P, x0);
   r.structurally_flat_tetrahedra = std::size_t(std::count(flat.begin(), flat.end(), char(1)));
-  r.elimination_seconds = seconds_since(t);
-  visitor.end_stage("elimination", r.elimination_seconds);
+  r.elimination_seconds = stage.end();
 
-  // 4. Quantization.
-  visitor.start_stage("rounding");
-  t = Clock::now();
+  stage.start("seamless_map");
   internal::Fixed_variable_solver solver;
-  auto jump_form = [&](Index f, int k) {
-    internal::Linear_form form;
-    const auto e = expression(first_jump + 3 * cut_index[f] + std::uint32_t(k));
-    form.constant = e.constant;
-    for(const Term& term : e.terms) form.terms.emplace_back(Eigen::Index(column[term.var]), term.coef);
-    std::sort(form.terms.begin(), form.terms.end());
-    return form;
-  };
-  const internal::Separation_finder<Traits> finder(mesh, matchings, cut, geometry, P, x0, integer_column, flat, jump_form);
-  internal::Greedy_rounding_quantizer greedy;
-  internal::Separating_quantizer separating(
-    [&](const Eigen::VectorXd& seamless, const Eigen::VectorXd& v) { return finder.violated(seamless, v); },
-    [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
-  separating.time_limit = quantization_time_limit;
-  internal::Quantizer& quantizer = quantization == Integer_grid_map_quantization::GREEDY_ROUNDING
-                                     ? static_cast<internal::Quantizer&>(greedy) : separating;
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(m);
-  const internal::Quantization_result q = quantizer.quantize(H, rhs, integer_column, solver, y);
-  if(quantization != Integer_grid_map_quantization::GREEDY_ROUNDING) {
-    const internal::Separation_report& sr = separating.report;
-    r.quantization = sr.used ? Integer_grid_map_quantization::SEPARATION_PROGRAM : Integer_grid_map_quantization::GREEDY_ROUNDING;
-    r.quantization_reason = sr.reason;
-    r.folds_after_rounding = sr.folds_after_rounding;
-    r.folds_after_separation = sr.folds_after_program;
-    r.separation_rounds = sr.rounds;
-    r.separation_constraints = sr.constraints;
-    r.separation_variables = sr.variables;
-    r.separation_seconds = sr.program_seconds;
-  }
-  r.rounding_rounds = q.rounds;
-  r.max_rounding = q.max_rounding;
-  if(q.relaxed.size() == m) r.relaxed_inverted_tetrahedra = internal::count_non_positive_jacobians(geometry, P * q.relaxed + x0);
+  const internal::Seamless_map seamless =
+    internal::compute_seamless_map(mesh, geometry, frames, s, P, x0, flat, H, rhs, solver, o.untangle, o.untangling_rings);
+  internal::report_seamless_map(seamless, r);
+  if(o.seamless_parameters) internal::corner_parameters(P * seamless.y + x0, *o.seamless_parameters);
+  r.seamless_seconds = stage.end();
+
+  stage.start("rounding");
+  auto jump_form = [&](std::uint32_t f, int k) { return reduced.jump_form(f, k); };
+  const internal::Separation_finder<Traits> finder(mesh, matchings, cut.cut, geometry, P, x0, reduced.integer_column, flat, jump_form);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(P.cols());
+  const internal::Quantization_result q = seamless.success ? internal::quantize_map(finder, H, rhs, reduced.integer_column, seamless.y,
+                                                                                    o, solver, y, r)
+                                                           : internal::Quantization_result{false};
   r.rounded_inverted_tetrahedra = internal::count_non_positive_jacobians(geometry, P * y + x0);
-  r.rounding_seconds = seconds_since(t);
-  visitor.end_stage("rounding", r.rounding_seconds);
+  r.rounding_seconds = stage.end();
 
-  // 5. Repair of the folds. First the local untangling of the rounded map (the tets within a few rings of
-  // the folds): it repairs most maps alone, and the stiffening, a numeric factorization per round over
-  // the whole mesh, rarely changes the count (B0: 2 inverted before and after 3 rounds, 4.5 s of its 7.4 s
-  // map). If folds remain: stiffening from the rounded map, then the local untangling again and the
-  // global one if folds still remain (from the stiffened map: from the partly untangled one, s12c's hex
-  // mesh came out invalid). Folds whose rings hold more than a quarter of the tets go to the global
-  // untangling directly.
-  auto folds = [&](const Eigen::VectorXd& v) { return internal::count_non_positive_jacobians(geometry, P * v + x0, &flat); };
-  auto untangle_locally = [&](Eigen::VectorXd& v) {
-    const std::vector<char> region = internal::untangling_region(mesh, geometry, P * v + x0, flat, untangling_rings);
-    if(std::size_t(std::count(region.begin(), region.end(), char(1))) > nt / 4) return false;
-    r.untangling_ran = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, v, &region).ran || r.untangling_ran;
-    return true;
-  };
-  // (a failed rounding leaves nothing to repair: its map is reported as it is)
-  bool repaired = !q.success || folds(y) == 0;
-  if(!repaired && untangle) {
-    visitor.start_stage("untangling");
-    t = Clock::now();
-    Eigen::VectorXd z = y;
-    if(untangle_locally(z) && folds(z) == 0) { y = z; repaired = true; }
-    r.untangling_seconds += seconds_since(t);
-    visitor.end_stage("untangling", seconds_since(t));
-  }
-  if(!repaired) {
-    visitor.start_stage("stiffening");
-    t = Clock::now();
-    r.stiffening_rounds = internal::stiffen_map(geometry, frames, s, P, x0, flat, solver, y, max_stiffening);
-    r.stiffening_seconds = seconds_since(t);
-    visitor.end_stage("stiffening", r.stiffening_seconds);
-    if(untangle && folds(y) > 0) {
-      visitor.start_stage("untangling");
-      t = Clock::now();
-      const Eigen::VectorXd stiffened = y;
-      if(!untangle_locally(y) || folds(y) > 0) {
-        y = stiffened;
-        r.untangling_ran = internal::untangle_map(geometry, frames, s, P, x0, integer_column, flat, y).ran || r.untangling_ran;
-      }
-      r.untangling_seconds += seconds_since(t);
-      visitor.end_stage("untangling", seconds_since(t));
-    }
+  if(q.success) {
+    const internal::Fold_repair_input in{geometry, frames, s, P, x0, reduced.integer_column, flat};
+    const internal::Fold_repair_report fr =
+      internal::repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y);
+    r.stiffening_rounds = fr.stiffening_rounds;
+    r.untangling_ran = r.untangling_ran || fr.untangling_ran;
+    r.stiffening_seconds = fr.stiffening_seconds;
+    r.untangling_seconds = fr.untangling_seconds;
   }
 
-  // 7. Sanitizing and the final map.
-  visitor.start_stage("sanitizing");
-  t = Clock::now();
-  r.sanitize_move = internal::snap_to_dyadic_grid(y, integer_column);
-  const Eigen::VectorXd x = P * y + x0;
-
-  internal::assemble_map(mesh, matchings, cut, geometry, s, x, jog_edges,
-                         [&](Index f, int k) { return int(std::lround(jump_form(f, k)(y))); }, map, r);
-  r.sanitize_seconds = seconds_since(t);
-  visitor.end_stage("sanitizing", r.sanitize_seconds);
-
-  if(!q.success) r.status = Integer_grid_map_status::SOLVER_FAILURE;
-  else if(r.sign_contradictions > 0 || r.inconsistent_constraints > 0) r.status = Integer_grid_map_status::INCONSISTENT_MATCHINGS;
-  else if(!r.defects.empty()) r.status = Integer_grid_map_status::NON_MESHABLE_SINGULARITIES;
-  else if(r.inverted_tetrahedra > 0) r.status = Integer_grid_map_status::INVERTED_TETRAHEDRA;
-  else if(r.degenerate_tetrahedra > 0) r.status = Integer_grid_map_status::DEGENERATE_TETRAHEDRA;
-  r.seconds = seconds_since(start);
+  stage.start("sanitizing");
+  r.sanitize_move = internal::snap_to_dyadic_grid(y, reduced.integer_column);
+  internal::assemble_map(mesh, matchings, cut.cut, geometry, s, P * y + x0, jog_edges,
+                         [&](std::uint32_t f, int k) { return int(std::lround(jump_form(f, k)(y))); }, map, r);
+  r.sanitize_seconds = stage.end();
+  internal::set_map_status(q.success, r);
+  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return r;
 }
 

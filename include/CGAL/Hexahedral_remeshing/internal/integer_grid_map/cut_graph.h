@@ -96,6 +96,32 @@ std::vector<char> compute_cut_faces(const Tetrahedral_mesh_3<Traits>& mesh, cons
   return cut;
 }
 
+// The cut of the map: the faces cut by compute_cut_faces() with the boundary edges and the edges of
+// non-trivial holonomy protected, and each cut face's index among them (-1 elsewhere).
+struct Map_cut
+{
+  std::vector<char> cut;                 // per face
+  std::vector<std::uint32_t> cut_index;  // per face
+  std::size_t cut_faces = 0;
+};
+
+template <class Traits>
+Map_cut compute_map_cut(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<int>& edge_holonomy, int identity)
+{
+  const std::size_t ne = mesh.number_of_edges(), nf = mesh.number_of_faces();
+  std::vector<char> protected_edge(ne, 0), singular_edge(ne, 0);
+  for(std::uint32_t e = 0; e < ne; ++e) {
+    if(mesh.is_boundary_edge(e)) { protected_edge[e] = 1; continue; }
+    if(edge_holonomy[e] != identity) protected_edge[e] = singular_edge[e] = 1;
+  }
+  Map_cut c;
+  c.cut = compute_cut_faces(mesh, protected_edge, singular_edge);
+  c.cut_index.assign(nf, std::uint32_t(-1));
+  for(std::uint32_t f = 0; f < nf; ++f)
+    if(c.cut[f]) c.cut_index[f] = std::uint32_t(c.cut_faces++);
+  return c;
+}
+
 } // namespace internal
 } // namespace Hexahedral_remeshing
 } // namespace CGAL

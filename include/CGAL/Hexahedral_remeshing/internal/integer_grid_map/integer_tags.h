@@ -95,6 +95,23 @@ void tag_singular_lines(const Tetrahedral_mesh_3<Traits>& mesh, const Matchings&
   }
 }
 
+// The variable reduction of the map: the 12 corner scalars per tetrahedron glued across the uncut
+// faces (signed union-find), then the integer tags of boundary planes and singular lines. Returns
+// the dofs; `sign_contradictions` receives the scalars forced to x = -x.
+template <class Traits>
+Map_dofs reduce_map_variables(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                              const Matchings& matchings, const Singularity_graph& singularities,
+                              const std::vector<char>& cut, std::size_t& sign_contradictions)
+{
+  const std::size_t nt = mesh.number_of_tetrahedra();
+  Signed_union_find uf(12 * nt);
+  sign_contradictions = glue_uncut_faces(mesh, matchings, cut, uf);
+  std::vector<char> integer_scalar(12 * nt, 0);
+  tag_boundary_planes(mesh, frames, uf, integer_scalar);
+  tag_singular_lines(mesh, matchings, singularities, uf, integer_scalar);
+  return label_dofs(uf, integer_scalar);
+}
+
 } // namespace internal
 } // namespace Hexahedral_remeshing
 } // namespace CGAL

@@ -50,6 +50,10 @@ public:
   int maximum_rounds = 8;
   double time_limit = 60;           // seconds, over all programs
   double seamless_weight = 0.25;
+  // The seamless map that orders the entities and anchors the objective: the untangled one of
+  // compute_seamless_map() (an order read from a folded map is not an order); the rounding's
+  // relaxation if empty.
+  Eigen::VectorXd seamless;
   Separation_report report;
 
   Separating_quantizer(Violated violated, Fold_count folds) : m_violated(std::move(violated)), m_folds(std::move(folds)) {}
@@ -62,12 +66,12 @@ public:
     if(!q.success || q.relaxed.size() != y.size()) { report.reason = "the rounding failed"; return q; }
     report.folds_after_rounding = report.folds_after_program = m_folds(y);
     if(report.folds_after_rounding == 0) { report.reason = "the rounded map does not fold"; return q; }
-    separate(q.relaxed, solver, y);
+    separate(seamless.size() == y.size() ? seamless : q.relaxed, solver, y);
     return q;
   }
 
 private:
-  void separate(const Eigen::VectorXd& seamless, Fixed_variable_solver& solver, Eigen::VectorXd& y)
+  void separate(const Eigen::VectorXd& reference, Fixed_variable_solver& solver, Eigen::VectorXd& y)
   {
     const Eigen::VectorXd rounded = y;
     Eigen::VectorXd best = y, current = y;
@@ -77,12 +81,12 @@ private:
     for(;;) {
       if(report.rounds == maximum_rounds) { report.reason = "round limit with folds left"; break; }
       std::size_t added = 0;
-      for(Linear_form& c : m_violated(seamless, current)) added += constraints.insert(std::move(c)).second;
+      for(Linear_form& c : m_violated(reference, current)) added += constraints.insert(std::move(c)).second;
       if(added == 0) { report.reason = report.rounds == 0 ? "no collapse found at the folds" : "folds left without a collapse"; break; }
       std::vector<Integer_program_variable> variables;
       for(const Linear_form& c : constraints)
         for(const auto& t : c.terms) columns.insert(t.first);
-      for(Eigen::Index col : columns) variables.push_back({col, rounded[col], 1.0, seamless[col], seamless_weight});
+      for(Eigen::Index col : columns) variables.push_back({col, rounded[col], 1.0, reference[col], seamless_weight});
       const Integer_program_result p =
         solve_integer_program(variables, std::vector<Linear_form>(constraints.begin(), constraints.end()), seconds_left);
       ++report.rounds;

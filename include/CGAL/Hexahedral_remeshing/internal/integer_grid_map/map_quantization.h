@@ -1,0 +1,105 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_QUANTIZATION_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_QUANTIZATION_H
+
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separating_quantizer.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// Starts and ends the stages of compute_integer_grid_map() on its visitor; end() returns the seconds.
+template <class Visitor>
+struct Map_stage_timer
+{
+  Visitor& visitor;
+  std::string stage = std::string();
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+
+  void start(const std::string& name)
+  {
+    stage = name;
+    visitor.start_stage(stage);
+    started = std::chrono::steady_clock::now();
+  }
+  double end()
+  {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    visitor.end_stage(stage, seconds);
+    return seconds;
+  }
+};
+
+// The seamless map's part of the report (`Result`: Integer_grid_map_result).
+template <class Result>
+void report_seamless_map(const Seamless_map& m, Result& r)
+{
+  r.relaxed_inverted_tetrahedra = m.inverted_before_untangling;
+  r.seamless_inverted_tetrahedra = m.inverted;
+  r.seamless_degenerate_tetrahedra = m.degenerate;
+  r.seamless_injective = m.success && m.folds.empty();
+  r.seamless_folds = m.folds;
+  r.seamless_untangling_ran = m.untangling_ran;
+}
+
+// The quantization of the map (`Options`: Map_options; `Result`: Integer_grid_map_result): greedy
+// rounding, or the separating quantizer with `seamless` (the untangled seamless map) as its
+// reference; the separation's report copied into `r`.
+template <class Finder, class Options, class Result>
+Quantization_result quantize_map(const Finder& finder, const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs,
+                                 const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
+                                 const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r)
+{
+  typedef decltype(r.quantization) Path;
+  if(o.quantization == Path::GREEDY_ROUNDING) {
+    Greedy_rounding_quantizer greedy;
+    return greedy.quantize(H, rhs, integer_column, solver, y);
+  }
+  Separating_quantizer separating(
+    [&](const Eigen::VectorXd& reference, const Eigen::VectorXd& v) { return finder.violated(reference, v); },
+    [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
+  separating.time_limit = o.quantization_time_limit;
+  separating.seamless = seamless;
+  const Quantization_result q = separating.quantize(H, rhs, integer_column, solver, y);
+  const Separation_report& sr = separating.report;
+  r.quantization = sr.used ? Path::SEPARATION_PROGRAM : Path::GREEDY_ROUNDING;
+  r.quantization_reason = sr.reason;
+  r.folds_after_rounding = sr.folds_after_rounding;
+  r.folds_after_separation = sr.folds_after_program;
+  r.separation_rounds = sr.rounds;
+  r.separation_constraints = sr.constraints;
+  r.separation_variables = sr.variables;
+  r.separation_seconds = sr.program_seconds;
+  return q;
+}
+
+// The status of the map, the most serious first (`Result`: Integer_grid_map_result).
+template <class Result>
+void set_map_status(bool solved, Result& r)
+{
+  typedef decltype(r.status) Status;
+  if(!solved) r.status = Status::SOLVER_FAILURE;
+  else if(r.sign_contradictions > 0 || r.inconsistent_constraints > 0) r.status = Status::INCONSISTENT_MATCHINGS;
+  else if(!r.defects.empty()) r.status = Status::NON_MESHABLE_SINGULARITIES;
+  else if(r.inverted_tetrahedra > 0) r.status = Status::INVERTED_TETRAHEDRA;
+  else if(r.degenerate_tetrahedra > 0) r.status = Status::DEGENERATE_TETRAHEDRA;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_QUANTIZATION_H

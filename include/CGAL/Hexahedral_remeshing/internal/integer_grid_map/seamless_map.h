@@ -1,0 +1,106 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_MAP_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_MAP_H
+
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// Exact orientation of every tetrahedron's corner parameters (x: 12 scalars per tetrahedron, corners
+// in the mesh's vertex order; the mesh's tetrahedra are positively oriented, so NEGATIVE is inverted).
+// Epick's predicate is exact on the double inputs.
+inline std::vector<CGAL::Orientation> parameter_orientations(const Eigen::VectorXd& x)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
+  const std::size_t nt = std::size_t(x.size()) / 12;
+  std::vector<CGAL::Orientation> o(nt);
+  for(std::size_t t = 0; t < nt; ++t) {
+    std::array<Point, 4> u;
+    for(int c = 0; c < 4; ++c) {
+      const Eigen::Index i = Eigen::Index(12 * t + 3 * c);
+      u[std::size_t(c)] = Point(x[i], x[i + 1], x[i + 2]);
+    }
+    o[t] = CGAL::orientation(u[0], u[1], u[2], u[3]);
+  }
+  return o;
+}
+
+// The corner parameters of the scalars `x` (12 per tetrahedron), one array per tetrahedron.
+inline void corner_parameters(const Eigen::VectorXd& x, std::vector<std::array<Eigen::Vector3d, 4> >& parameters)
+{
+  parameters.resize(std::size_t(x.size()) / 12);
+  for(std::size_t t = 0; t < parameters.size(); ++t)
+    for(int c = 0; c < 4; ++c) parameters[t][std::size_t(c)] = x.segment<3>(Eigen::Index(12 * t + 3 * c));
+}
+
+// The seamless map before any rounding (issue 27 step 1; robust_pipeline.md §2): every variable
+// continuous, boundary faces on coordinate planes and singular lines on coordinate lines by the
+// reduction, transitions by the elimination.
+struct Seamless_map
+{
+  Eigen::VectorXd y;                        // the free variables, snapped to the dyadic grid
+  std::size_t inverted_before_untangling = 0; // det J <= 0 (floating) of the energy's minimizer
+  std::size_t inverted = 0, degenerate = 0;   // exact orientation of the final seamless map
+  std::vector<std::uint32_t> folds;           // its inverted and flat tetrahedra
+  bool untangling_ran = false;
+  bool success = true;                        // false if the factorization failed
+};
+
+// The minimizer of the map energy with no integer constraint; where it folds, the foldover-free
+// untangling of all its variables (around the folds, or everywhere if their rings hold more than a
+// quarter of the tetrahedra or folds remain), kept if it folds fewer tetrahedra; then every
+// variable snapped to the dyadic grid (sanitize.h), so that the corner values, and with them the
+// exact orientations reported, are those of a map whose transitions hold exactly.
+template <class Traits>
+Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry,
+                                  const std::vector<Eigen::Matrix3d>& frames, double s,
+                                  const Eigen::SparseMatrix<double, Eigen::RowMajor>& P, const Eigen::VectorXd& x0,
+                                  const std::vector<char>& flat, const Eigen::SparseMatrix<double>& H,
+                                  const Eigen::VectorXd& rhs, Fixed_variable_solver& solver, bool untangle, int rings)
+{
+  Seamless_map m;
+  solver.set_system(H, rhs);
+  if(!solver.solve(m.y)) { m.success = false; m.y = Eigen::VectorXd::Zero(P.cols()); return m; }
+  const std::vector<char> none(std::size_t(P.cols()), 0);
+  m.inverted_before_untangling = count_non_positive_jacobians(geometry, P * m.y + x0);
+  if(untangle && count_non_positive_jacobians(geometry, P * m.y + x0, &flat) > 0) {
+    const std::size_t nt = geometry.volumes.size();
+    const std::vector<char> region = untangling_region(mesh, geometry, P * m.y + x0, flat, rings);
+    const bool local = std::size_t(std::count(region.begin(), region.end(), char(1))) <= nt / 4;
+    m.untangling_ran = untangle_map(geometry, frames, s, P, x0, none, flat, m.y, local ? &region : nullptr).ran;
+    if(local && count_non_positive_jacobians(geometry, P * m.y + x0, &flat) > 0)
+      m.untangling_ran = untangle_map(geometry, frames, s, P, x0, none, flat, m.y).ran || m.untangling_ran;
+  }
+  snap_to_dyadic_grid(m.y, none);
+  const std::vector<CGAL::Orientation> o = parameter_orientations(P * m.y + x0);
+  for(std::size_t t = 0; t < o.size(); ++t) {
+    if(o[t] == CGAL::POSITIVE) continue;
+    m.folds.push_back(std::uint32_t(t));
+    ++(o[t] == CGAL::NEGATIVE ? m.inverted : m.degenerate);
+  }
+  return m;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_SEAMLESS_MAP_H
