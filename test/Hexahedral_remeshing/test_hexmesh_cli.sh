@@ -408,6 +408,9 @@ for part in fin_block slotted_block; do
     --quiet > /dev/null 2> "$tmp/err" || fail "$part: $(tail -1 "$tmp/err")"
   python3 "$root/test/Hexahedral_remeshing/check_hex_mesh.py" "$tmp/$part.mesh" > "$tmp/check" || fail "$part: $(cat "$tmp/check")"
   grep -q '"path": "separation_program"' "$tmp/$part.json" || fail "$part: the map does not come from the separation program"
+  # the seamless map, before the rounding, is injective: the collapse is the rounding's
+  python3 -c 'import json, sys; s = json.load(open(sys.argv[1]))["integer_grid_map"]["seamless_map"]; sys.exit(0 if s["injective"] and s["inverted_tetrahedra"] + s["degenerate_tetrahedra"] == 0 and s["folded_tetrahedra"] == [] else 1)' \
+    "$tmp/$part.json" || fail "$part: the seamless map block says it is not injective"
 done
 fi
 

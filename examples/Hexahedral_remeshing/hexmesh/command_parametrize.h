@@ -118,6 +118,16 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("defects", m.defects.size())
       .value("transition_error", m.transition_error)
       .value("seconds", m.seconds);
+  const std::size_t shown = (std::min)(m.seamless_folds.size(), std::size_t(100));
+  json.begin("seamless_map")
+      .value("injective", m.seamless_injective)
+      .value("inverted_tetrahedra", m.seamless_inverted_tetrahedra)
+      .value("degenerate_tetrahedra", m.seamless_degenerate_tetrahedra)
+      .value("inverted_before_untangling", m.relaxed_inverted_tetrahedra)
+      .value("untangling_ran", m.seamless_untangling_ran)
+      .array("folded_tetrahedra", std::vector<std::uint32_t>(m.seamless_folds.begin(), m.seamless_folds.begin() + std::ptrdiff_t(shown)))
+      .value("seconds", m.seamless_seconds)
+      .end();
   json.begin("quantization")
       .value("path", quantization_name(m.quantization))
       .value("reason", m.quantization_reason)
@@ -154,6 +164,14 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
       << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, min det J "
       << std::setprecision(3) << m.min_relative_jacobian << std::defaultfloat << " of the target; " << m.integer_variables
       << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
+      << "  seamless map        "
+      << (m.seamless_injective ? std::string("injective")
+                               : "NOT injective: " + std::to_string(m.seamless_inverted_tetrahedra) + " inverted and " +
+                                   std::to_string(m.seamless_degenerate_tetrahedra) + " flat tetrahedra (" +
+                                   std::to_string(m.structurally_flat_tetrahedra) + " flat for every map)")
+      << " before rounding"
+      << (m.seamless_untangling_ran ? " (untangled: " + std::to_string(m.relaxed_inverted_tetrahedra) + " folded in the minimizer)" : std::string())
+      << "\n"
       << "  quantization        "
       << (m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::SEPARATION_PROGRAM
             ? "separation program: " + std::to_string(m.folds_after_rounding) + " folded tetrahedra after the rounding, " +

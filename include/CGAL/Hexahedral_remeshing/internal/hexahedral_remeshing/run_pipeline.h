@@ -77,11 +77,12 @@ inline void name_failed_stage(Hexahedral_remeshing_result& r)
         reasons += (reasons.empty() ? "" : ", ") + std::string(meshability_reason_name(Meshability_reason(k))) + " " + std::to_string(m.counts[k]);
     r.failed_stage = "frame_field";
     r.failure_reason = "the singularity graph is not locally meshable after the repair (" + reasons + ")";
-  } else if(r.map.relaxed_inverted_tetrahedra > 0 && r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
+  } else if(!r.map.seamless_injective && r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
     r.failed_stage = "seamless_map";
-    r.failure_reason = std::to_string(r.map.relaxed_inverted_tetrahedra) + " tetrahedra inverted in the map before rounding, " +
+    r.failure_reason = "the seamless map is not injective before rounding (" + std::to_string(r.map.seamless_inverted_tetrahedra) +
+                       " inverted and " + std::to_string(r.map.seamless_degenerate_tetrahedra) + " flat tetrahedra after its untangling); " +
                        std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
-                       " flat after the repair of the folds";
+                       " flat in the final map";
   } else if(r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
     r.failed_stage = "rounding";
     r.failure_reason = "the rounded map folds " + std::to_string(r.map.rounded_inverted_tetrahedra) + " tetrahedra; " +
