@@ -38,7 +38,7 @@ struct Stage_timer : HR::Integer_grid_map_visitor
   void end_stage(const std::string& stage, double s) { seconds[stage] += s; } // the untangling may run twice
 };
 
-const std::vector<std::string> stages = {"cut", "reduction", "elimination", "rounding", "stiffening", "untangling", "sanitizing"};
+const std::vector<std::string> stages = {"cut", "reduction", "elimination", "seamless_map", "rounding", "stiffening", "untangling", "sanitizing"};
 
 void run(const std::string& name, const Mesh& mesh, int runs, double h)
 {

@@ -252,6 +252,7 @@ inline int command_parametrize(const Arguments& args)
         .value("cut", m.cut_seconds)
         .value("reduction", m.reduction_seconds)
         .value("elimination", m.elimination_seconds)
+        .value("seamless_map", m.seamless_seconds)
         .value("rounding", m.rounding_seconds)
         .value("stiffening", m.stiffening_seconds)
         .value("untangling", m.untangling_seconds)
@@ -273,7 +274,7 @@ inline int command_parametrize(const Arguments& args)
     print_integer_grid_map(std::cout, m, check, agreement);
     std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", frame field "
               << f.seconds << ", map " << m.seconds << " (cut " << m.cut_seconds << ", reduction " << m.reduction_seconds
-              << ", elimination " << m.elimination_seconds << ", rounding " << m.rounding_seconds << ", stiffening "
+              << ", elimination " << m.elimination_seconds << ", seamless map " << m.seamless_seconds << ", rounding " << m.rounding_seconds << ", stiffening "
               << m.stiffening_seconds << ", untangling " << m.untangling_seconds << ", sanitize " << m.sanitize_seconds
               << ")\n" << std::defaultfloat
               << "  map                 " << (write_map ? hexex + " (hexmesh extract " + hexex + " --out OUT.mesh)" : std::string("not written"))

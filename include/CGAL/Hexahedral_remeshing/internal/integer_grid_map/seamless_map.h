@@ -66,7 +66,7 @@ struct Seamless_map
 
 // The minimizer of the map energy with no integer constraint; where it folds, the foldover-free
 // untangling of all its variables (around the folds, or everywhere if their rings hold more than a
-// quarter of the tetrahedra or folds remain), kept if it folds fewer tetrahedra; then every
+// quarter of the tetrahedra), kept if it folds fewer tetrahedra; then every
 // variable snapped to the dyadic grid (sanitize.h), so that the corner values, and with them the
 // exact orientations reported, are those of a map whose transitions hold exactly.
 template <class Traits>
@@ -86,8 +86,6 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
     const std::vector<char> region = untangling_region(mesh, geometry, P * m.y + x0, flat, rings);
     const bool local = std::size_t(std::count(region.begin(), region.end(), char(1))) <= nt / 4;
     m.untangling_ran = untangle_map(geometry, frames, s, P, x0, none, flat, m.y, local ? &region : nullptr).ran;
-    if(local && count_non_positive_jacobians(geometry, P * m.y + x0, &flat) > 0)
-      m.untangling_ran = untangle_map(geometry, frames, s, P, x0, none, flat, m.y).ran || m.untangling_ran;
   }
   snap_to_dyadic_grid(m.y, none);
   const std::vector<CGAL::Orientation> o = parameter_orientations(P * m.y + x0);
