@@ -3,6 +3,7 @@
 // integer planes and lines, parameter-space dihedral angles), never from the code's own flags.
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
+#include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
 #include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
@@ -203,13 +204,48 @@ struct Map_run
   Check check;
 };
 
+// The check of a map whose mesh is the input's with jog edges split (more tetrahedra than `m`): the
+// map's own mesh is built from its points and tetrahedra, and the input field's valences are carried
+// by vertex pairs (an edge new to the map's mesh is interior and regular).
+Check check_refined_map(const Mesh& m, const HR::Integer_grid_map& map, const std::vector<int>& valences,
+                        const HR::Singularity_graph& singularities)
+{
+  HR::Tetrahedral_soup_3<Mesh::Point_3> soup;
+  soup.points = map.points;
+  for(const auto& t : map.tetrahedra) soup.tetrahedra.push_back({{t[0], t[1], t[2], t[3]}});
+  Mesh refined;
+  HR::build_tetrahedral_mesh(soup, refined, HR::parameters::split_multi_boundary_tetrahedra(
+                                              false, HR::parameters::coincident_vertices(HR::Coincident_vertices::KEEP)));
+  EXPECT_EQ(refined.number_of_tetrahedra(), map.tetrahedra.size());
+  for(Index t = 0; t < refined.number_of_tetrahedra(); ++t) // the map's tetrahedra, in their order
+    EXPECT_EQ(refined.tetrahedron_vertices(t), map.tetrahedra[refined.tetrahedron_input_index(t)]);
+  std::vector<int> refined_valences(valences.empty() ? 0 : refined.number_of_edges(), 2);
+  HR::Singularity_graph graph;
+  graph.edge_valence.assign(refined.number_of_edges(), 4);
+  for(Index e = 0; e < refined.number_of_edges(); ++e) {
+    const auto& ev = refined.edge_vertices(e);
+    const Index old = ev[0] < m.number_of_vertices() && ev[1] < m.number_of_vertices() ? m.find_edge(ev[0], ev[1]) : Mesh::null_index;
+    EXPECT_TRUE(old != Mesh::null_index || !refined.is_boundary_edge(e)); // the boundary is the input's
+    if(old == Mesh::null_index) continue;
+    graph.edge_valence[e] = singularities.edge_valence[old];
+    if(!valences.empty()) refined_valences[e] = valences[old];
+  }
+  return check_map(refined, map, refined_valences, graph);
+}
+
+Check check_run(const Mesh& m, const Map_run& r)
+{
+  return r.map.tetrahedra.size() == m.number_of_tetrahedra() ? check_map(m, r.map, r.field.valences, r.field.singularities)
+                                                             : check_refined_map(m, r.map, r.field.valences, r.field.singularities);
+}
+
 template <class NP = CGAL::parameters::Default_named_parameters>
 Map_run run(const Mesh& m, const NP& np = CGAL::parameters::default_values())
 {
   Map_run r;
   r.field = HR::compute_frame_field_pipeline(m);
   r.report = HR::compute_integer_grid_map(m, r.field, r.map, np);
-  r.check = check_map(m, r.map, r.field.valences, r.field.singularities);
+  r.check = check_run(m, r);
   return r;
 }
 
@@ -544,13 +580,13 @@ void print(const char* name, const Map_run& r)
 {
   std::printf("%-24s status %d inverted %zu degenerate %zu (flat by construction %zu) jogs %zu (degenerate %zu) "
               "valences %zu/%zu interior mismatches %zu cut %zu int %zu rounds %d stiffening %d untangled %d "
-              "disagreeing faces %zu h %.3g %.2f s seamless %zu->%zu folds (injective %d) quantization %s folds %zu->%zu programs %d (%s)\n",
+              "disagreeing faces %zu h %.3g %.2f s split %zu seamless %zu->%zu folds (injective %d) quantization %s folds %zu->%zu programs %d (%s)\n",
               name, int(r.report.status), r.check.inverted, r.check.degenerate, r.report.structurally_flat_tetrahedra,
               r.report.jogs, r.report.degenerate_jogs, r.check.boundary_edges - r.check.valence_mismatches,
               r.check.boundary_edges, r.check.interior_valence_mismatches, r.report.cut_faces,
               r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
               int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds,
-              r.report.relaxed_inverted_tetrahedra, r.report.seamless_folds.size(), int(r.report.seamless_injective),
+              r.report.split_jog_edges, r.report.relaxed_inverted_tetrahedra, r.report.seamless_folds.size(), int(r.report.seamless_injective),
               r.report.quantization == HR::Integer_grid_map_quantization::SEPARATION_PROGRAM ? "separation" : "greedy",
               r.report.folds_after_rounding, r.report.folds_after_separation, r.report.separation_rounds,
               r.report.quantization_reason.c_str());
@@ -608,7 +644,7 @@ TEST(IntegerGridMap, PrismWithOneValenceThreeCurve)
   Map_run r;
   r.field = HR::compute_frame_field_pipeline(m, HR::parameters::acute_edge_band_radius(2 * h));
   r.report = HR::compute_integer_grid_map(m, r.field, r.map, HR::parameters::target_edge_length(h));
-  r.check = check_map(m, r.map, r.field.valences, r.field.singularities);
+  r.check = check_run(m, r);
   print("prism 30-60-90", r);
   ASSERT_EQ(r.field.singularities.number_of_curves(3), 1u);
   EXPECT_GT(r.field.fixed_frames.size(), 0u);
@@ -708,7 +744,7 @@ TEST(IntegerGridMap, SeamlessMapIsInjectiveAndSeamless)
     SCOPED_TRACE(k.name);
     std::vector<std::array<Eigen::Vector3d, 4> > u;
     const Map_run r = run(k.mesh, HR::parameters::target_edge_length(k.h, HR::parameters::seamless_map_parameters(&u)));
-    ASSERT_EQ(u.size(), k.mesh.number_of_tetrahedra());
+    ASSERT_EQ(u.size(), r.map.tetrahedra.size());
     const Seamless_check c = check_seamless_map(r.map, u);
     std::printf("%-12s seamless map: minimizer %zu inverted, after untangling %zu inverted %zu flat (independent: %zu), "
                 "injective %d, untangled %d, transition spread %.3g, boundary faces off planes %zu/%zu, %.3f s\n",
@@ -724,6 +760,33 @@ TEST(IntegerGridMap, SeamlessMapIsInjectiveAndSeamless)
     EXPECT_EQ(c.boundary_faces_off_planes, 0u);
     if(!k.injective) EXPECT_GE(c.not_positive, r.report.structurally_flat_tetrahedra);
   }
+}
+
+// jog_refinement: the edges that close a face with two singular edges are split, so that no face
+// has its three corners on one singular line. The map's mesh is the input's with the splits (checked
+// on that mesh, built from the map, with the input's valences carried by vertex pairs): the
+// structurally flat tetrahedra of the cylinder's jogs open (47 -> at most 1), the boundary and the
+// boundary valences are the input's.
+TEST(IntegerGridMap, JogRefinementOpensTheFlatTetrahedraOfJogs)
+{
+  const Mesh m = load(example_data + "/cylinder.off", 0.002);
+  const Map_run plain = run(m, HR::parameters::target_edge_length(0.25));
+  const Map_run r = run(m, HR::parameters::target_edge_length(0.25, HR::parameters::jog_refinement(true)));
+  print("cylinder, jog refinement", r);
+  EXPECT_EQ(plain.report.split_jog_edges, 0u);
+  EXPECT_EQ(plain.report.map_tetrahedra, m.number_of_tetrahedra());
+  EXPECT_GT(r.report.split_jog_edges, 0u);
+  EXPECT_EQ(r.map.points.size(), m.number_of_vertices() + r.report.split_jog_edges);
+  EXPECT_EQ(r.report.map_tetrahedra, r.map.tetrahedra.size());
+  EXPECT_GT(r.map.tetrahedra.size(), m.number_of_tetrahedra());
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v) EXPECT_EQ(r.map.points[v], m.point(Index(v)));
+  EXPECT_GE(plain.report.structurally_flat_tetrahedra, 40u);
+  EXPECT_LE(r.report.structurally_flat_tetrahedra, 1u);
+  EXPECT_LE(r.check.degenerate, 1u);
+  EXPECT_EQ(r.check.bad_transitions, 0u);
+  EXPECT_EQ(r.check.boundary_faces_off_plane, 0u);
+  EXPECT_EQ(r.check.boundary_edges, plain.check.boundary_edges);
+  EXPECT_EQ(r.check.valence_mismatches, 0u);
 }
 
 // Known failure: without the band, the valence-3 curve of the field runs along the 10-degree edge (its

@@ -10,27 +10,8 @@
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/cut_graph.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/dof_reduction.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/field_diagnostics.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fold_repair.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_assembly.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_elimination.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_quantization.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_tags.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/reduced_system.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separating_quantizer.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separation_constraints.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
-#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_grid_map_impl.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/jog_refinement.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -56,6 +37,7 @@ enum untangling_t { untangling };
 enum quantization_t { quantization };
 enum quantization_time_limit_t { quantization_time_limit };
 enum seamless_map_parameters_t { seamless_map_parameters };
+enum jog_refinement_t { jog_refinement };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -88,6 +70,8 @@ template <class T> unspecified_type quantization_time_limit(const T& value);
 /// Integer-grid map: receives the corner parameters of the seamless map, before any rounding
 /// (`std::vector<std::array<Eigen::Vector3d, 4> >*`, one array per tetrahedron; default none).
 template <class T> unspecified_type seamless_map_parameters(const T& value);
+/// Integer-grid map: split the edges that close singular jogs before the map (`bool`, default `false`).
+template <class T> unspecified_type jog_refinement(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_stiffening_iterations)
@@ -95,6 +79,7 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(untangling)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization_time_limit)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(seamless_map_parameters)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(jog_refinement)
 #endif
 } // namespace parameters
 
@@ -131,7 +116,8 @@ struct Integer_grid_map_defect
   };
   /// The kind.
   Kind kind = IMPROPER_EDGE;
-  /// The edge or vertex index in the tetrahedral mesh.
+  /// The edge or vertex index in the map's tetrahedral mesh (the input mesh with the jog edges split:
+  /// its first vertices are the input's).
   std::uint32_t index = 0;
   /// Position (model units): the vertex, or the edge midpoint.
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -151,6 +137,13 @@ struct Integer_grid_map_result
   double min_relative_jacobian = 0;
   /// Hex edge length used (model units); `s = 1 / target_edge_length`.
   double target_edge_length = 0;
+  /// Edges of the input mesh split at their midpoints before the map (named parameter
+  /// `jog_refinement`): the third edge of each face whose two other edges are singular. The map's
+  /// mesh (`Integer_grid_map::points`, `tetrahedra`) is the input mesh with these splits; its first
+  /// vertices are the input's.
+  std::size_t split_jog_edges = 0;
+  /// Tetrahedra of the map's mesh (the input's, more if jog edges were split).
+  std::size_t map_tetrahedra = 0;
   /// Interior faces of the cut (faces with an unknown integer jump).
   std::size_t cut_faces = 0;
   /// Free variables of the reduced problem, and how many of them are integer.
@@ -173,7 +166,8 @@ struct Integer_grid_map_result
   /// True if every tetrahedron of the seamless map is positively oriented (exact): the map is
   /// locally injective before the rounding.
   bool seamless_injective = false;
-  /// Where the seamless map is not injective: its inverted and flat tetrahedra (indices in the mesh).
+  /// Where the seamless map is not injective: its inverted and flat tetrahedra (indices in the map's
+  /// mesh, `Integer_grid_map::tetrahedra`).
   std::vector<std::uint32_t> seamless_folds;
   /// True if the foldover-free untangling of the seamless map ran (its minimizer folded).
   bool seamless_untangling_ran = false;
@@ -258,11 +252,13 @@ struct Integer_grid_map_visitor
 namespace internal {
 
 template <class Traits>
-double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry)
+double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh)
 {
-  (void)mesh;
   double volume = 0;
-  for(double v : geometry.volumes) volume += v;
+  for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+    const auto& v = mesh.tetrahedron_vertices(t);
+    volume += std::abs(CGAL::to_double(CGAL::volume(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]))));
+  }
   return std::cbrt(volume / 2000.0);
 }
 
@@ -297,16 +293,17 @@ struct Map_options
   Integer_grid_map_quantization quantization = Integer_grid_map_quantization::AUTOMATIC;
   double quantization_time_limit = 60;
   std::vector<std::array<Eigen::Vector3d, 4> >* seamless_parameters = nullptr;
+  bool jog_refinement = false;
 };
 
 template <class Traits, class NamedParameters>
-Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry, const NamedParameters& np)
+Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const std::string source = mesh.source().empty() ? std::string("<memory>") : mesh.source();
   Map_options o;
-  o.h = choose_parameter(get_parameter(np, internal_np::target_edge_length), default_target_edge_length(mesh, geometry));
+  o.h = choose_parameter(get_parameter(np, internal_np::target_edge_length), default_target_edge_length(mesh));
   if(!(o.h > 0) || !std::isfinite(o.h)) {
     std::ostringstream os;
     os << "compute_integer_grid_map: target_edge_length must be a positive finite length, got " << o.h;
@@ -314,6 +311,7 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geomet
   }
   o.maximum_stiffening = choose_parameter(get_parameter(np, internal_np::maximum_stiffening_iterations), 20);
   o.untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
+  o.jog_refinement = choose_parameter(get_parameter(np, internal_np::jog_refinement), false);
   o.quantization = choose_parameter(get_parameter(np, internal_np::quantization), Integer_grid_map_quantization::AUTOMATIC);
   o.quantization_time_limit = choose_parameter(get_parameter(np, internal_np::quantization_time_limit), 60.0);
   if(!(o.quantization_time_limit >= 0) || !std::isfinite(o.quantization_time_limit))
@@ -382,6 +380,11 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geomet
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{jog_refinement}
+///     \cgalParamDescription{split at its midpoint every interior regular edge that closes a face with two singular edges (a jog of a singular curve): the map puts the two singular edges on one integer line, which flattens every tetrahedron of that face whatever the map; the map is then computed on the split mesh, each new tetrahedron with its parent's frame. Off by default: where the curve doubles back along its axis the opened tetrahedra come out inverted (shared models i01c: 77 -> 154 inverted, n01c: 618 -> 751; the cylinder: 47 flat and 1 inverted -> 1 flat and 15 inverted)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{seamless_map_parameters}
 ///     \cgalParamDescription{receives the corner parameters (in hex edges) of the seamless map before any rounding, after its untangling: one array of four points per tetrahedron, in the order of its vertices}
 ///     \cgalParamType{`std::vector<std::array<Eigen::Vector3d, 4> >*`}
@@ -405,79 +408,23 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
                                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   using CGAL::parameters::get_parameter_reference;
   typedef std::chrono::steady_clock Clock;
   Integer_grid_map_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
   internal::check_map_inputs(mesh, frames, matchings, singularities);
   const auto start = Clock::now();
+  const internal::Map_options o = internal::map_options(mesh, np);
   Integer_grid_map_result r;
-  const internal::Map_geometry geometry = internal::compute_map_geometry(mesh);
-  const internal::Map_options o = internal::map_options(mesh, geometry, np);
   r.target_edge_length = o.h;
-  const double s = 1.0 / o.h;
-  const std::vector<std::uint32_t> jog_edges = internal::diagnose_field(mesh, frames, matchings, singularities, r);
-  internal::Map_stage_timer<decltype(visitor)> stage{visitor};
-
-  stage.start("cut");
-  const internal::Map_cut cut = internal::compute_map_cut(mesh, singularities.edge_holonomy, internal::Octahedral_group::identity_index);
-  r.cut_faces = cut.cut_faces;
-  r.cut_seconds = stage.end();
-
-  stage.start("reduction");
-  const internal::Map_dofs dofs = internal::reduce_map_variables(mesh, frames, matchings, singularities, cut.cut, r.sign_contradictions);
-  r.reduction_seconds = stage.end();
-
-  stage.start("elimination");
-  internal::Reduced_map reduced = internal::eliminate_cut_constraints(mesh, matchings, cut.cut, cut.cut_index, cut.cut_faces, dofs);
-  const auto& P = reduced.P;
-  const auto& x0 = reduced.x0;
-  r.inconsistent_constraints = reduced.inconsistent_rows;
-  r.variables = reduced.integer_column.size();
-  for(char c : reduced.integer_column) r.integer_variables += (c != 0);
-  Eigen::SparseMatrix<double> H;
-  Eigen::VectorXd rhs;
-  internal::assemble_reduced_system(geometry, frames, s, std::vector<double>(), P, x0, H, rhs);
-  // what neither the stiffening nor the untangling can repair
-  const std::vector<char> flat = internal::structurally_flat_tetrahedra(geometry, P, x0);
-  r.structurally_flat_tetrahedra = std::size_t(std::count(flat.begin(), flat.end(), char(1)));
-  r.elimination_seconds = stage.end();
-
-  stage.start("seamless_map");
-  internal::Fixed_variable_solver solver;
-  const internal::Seamless_map seamless =
-    internal::compute_seamless_map(mesh, geometry, frames, s, P, x0, flat, H, rhs, solver, o.untangle, o.untangling_rings);
-  internal::report_seamless_map(seamless, r);
-  if(o.seamless_parameters) internal::corner_parameters(P * seamless.y + x0, *o.seamless_parameters);
-  r.seamless_seconds = stage.end();
-
-  stage.start("rounding");
-  auto jump_form = [&](std::uint32_t f, int k) { return reduced.jump_form(f, k); };
-  const internal::Separation_finder<Traits> finder(mesh, matchings, cut.cut, geometry, P, x0, reduced.integer_column, flat, jump_form);
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(P.cols());
-  const internal::Quantization_result q = seamless.success ? internal::quantize_map(finder, H, rhs, reduced.integer_column, seamless.y,
-                                                                                    o, solver, y, r)
-                                                           : internal::Quantization_result{false};
-  r.rounded_inverted_tetrahedra = internal::count_non_positive_jacobians(geometry, P * y + x0);
-  r.rounding_seconds = stage.end();
-
-  if(q.success) {
-    const internal::Fold_repair_input in{geometry, frames, s, P, x0, reduced.integer_column, flat};
-    const internal::Fold_repair_report fr =
-      internal::repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y);
-    r.stiffening_rounds = fr.stiffening_rounds;
-    r.untangling_ran = r.untangling_ran || fr.untangling_ran;
-    r.stiffening_seconds = fr.stiffening_seconds;
-    r.untangling_seconds = fr.untangling_seconds;
+  internal::Refined_field<Traits> refined;
+  if(o.jog_refinement && internal::refine_jogs(mesh, frames, matchings, singularities, refined)) {
+    r.split_jog_edges = refined.mesh.number_of_vertices() - mesh.number_of_vertices();
+    internal::compute_map_stages(refined.mesh, refined.frames, refined.matchings, refined.singularities, o, visitor, map, r);
+  } else {
+    internal::compute_map_stages(mesh, frames, matchings, singularities, o, visitor, map, r);
   }
-
-  stage.start("sanitizing");
-  r.sanitize_move = internal::snap_to_dyadic_grid(y, reduced.integer_column);
-  internal::assemble_map(mesh, matchings, cut.cut, geometry, s, P * y + x0, jog_edges,
-                         [&](std::uint32_t f, int k) { return int(std::lround(jump_form(f, k)(y))); }, map, r);
-  r.sanitize_seconds = stage.end();
-  internal::set_map_status(q.success, r);
+  r.map_tetrahedra = map.tetrahedra.size();
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return r;
 }

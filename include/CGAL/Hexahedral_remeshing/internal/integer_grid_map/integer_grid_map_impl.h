@@ -1,0 +1,115 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_INTEGER_GRID_MAP_IMPL_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_INTEGER_GRID_MAP_IMPL_H
+
+#include <CGAL/Hexahedral_remeshing/Integer_grid_map.h>
+#include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/cut_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/field_diagnostics.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fold_repair.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_tags.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_assembly.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_elimination.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_quantization.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/reduced_system.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separation_constraints.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
+#include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// The stages of compute_integer_grid_map() on the map's mesh (the input mesh, or its copy with the
+// jog chords split): cut, reduction, elimination, seamless map, quantization, repair of the folds,
+// sanitizing and assembly. `Options`: Map_options; `Result`: Integer_grid_map_result.
+template <class Traits, class Options, class Visitor, class Result>
+void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                        const Matchings& matchings, const Singularity_graph& singularities, const Options& o,
+                        Visitor& visitor, Integer_grid_map& map, Result& r)
+{
+  const Map_geometry geometry = compute_map_geometry(mesh);
+  const double s = 1.0 / o.h;
+  const std::vector<std::uint32_t> jog_edges = diagnose_field(mesh, frames, matchings, singularities, r);
+  Map_stage_timer<decltype(visitor)> stage{visitor};
+
+  stage.start("cut");
+  const Map_cut cut = compute_map_cut(mesh, singularities.edge_holonomy, Octahedral_group::identity_index);
+  r.cut_faces = cut.cut_faces;
+  r.cut_seconds = stage.end();
+
+  stage.start("reduction");
+  const Map_dofs dofs = reduce_map_variables(mesh, frames, matchings, singularities, cut.cut, r.sign_contradictions);
+  r.reduction_seconds = stage.end();
+
+  stage.start("elimination");
+  Reduced_map reduced = eliminate_cut_constraints(mesh, matchings, cut.cut, cut.cut_index, cut.cut_faces, dofs);
+  const auto& P = reduced.P;
+  const auto& x0 = reduced.x0;
+  r.inconsistent_constraints = reduced.inconsistent_rows;
+  r.variables = reduced.integer_column.size();
+  for(char c : reduced.integer_column) r.integer_variables += (c != 0);
+  Eigen::SparseMatrix<double> H;
+  Eigen::VectorXd rhs;
+  assemble_reduced_system(geometry, frames, s, std::vector<double>(), P, x0, H, rhs);
+  // what neither the stiffening nor the untangling can repair
+  const std::vector<char> flat = structurally_flat_tetrahedra(geometry, P, x0);
+  r.structurally_flat_tetrahedra = std::size_t(std::count(flat.begin(), flat.end(), char(1)));
+  r.elimination_seconds = stage.end();
+
+  stage.start("seamless_map");
+  Fixed_variable_solver solver;
+  const Seamless_map seamless =
+    compute_seamless_map(mesh, geometry, frames, s, P, x0, flat, H, rhs, solver, o.untangle, o.untangling_rings);
+  report_seamless_map(seamless, r);
+  if(o.seamless_parameters) corner_parameters(P * seamless.y + x0, *o.seamless_parameters);
+  r.seamless_seconds = stage.end();
+
+  stage.start("rounding");
+  auto jump_form = [&](std::uint32_t f, int k) { return reduced.jump_form(f, k); };
+  const Separation_finder<Traits> finder(mesh, matchings, cut.cut, geometry, P, x0, reduced.integer_column, flat, jump_form);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(P.cols());
+  const Quantization_result q =
+    seamless.success ? quantize_map(finder, H, rhs, reduced.integer_column, seamless.y, o, solver, y, r) : Quantization_result{false};
+  r.rounded_inverted_tetrahedra = count_non_positive_jacobians(geometry, P * y + x0);
+  r.rounding_seconds = stage.end();
+
+  if(q.success) {
+    const Fold_repair_input in{geometry, frames, s, P, x0, reduced.integer_column, flat};
+    const Fold_repair_report fr =
+      repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y);
+    r.stiffening_rounds = fr.stiffening_rounds;
+    r.untangling_ran = r.untangling_ran || fr.untangling_ran;
+    r.stiffening_seconds = fr.stiffening_seconds;
+    r.untangling_seconds = fr.untangling_seconds;
+  }
+
+  stage.start("sanitizing");
+  r.sanitize_move = snap_to_dyadic_grid(y, reduced.integer_column);
+  assemble_map(mesh, matchings, cut.cut, geometry, s, P * y + x0, jog_edges,
+               [&](std::uint32_t f, int k) { return int(std::lround(jump_form(f, k)(y))); }, map, r);
+  r.sanitize_seconds = stage.end();
+  set_map_status(q.success, r);
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_INTEGER_GRID_MAP_IMPL_H
