@@ -9,6 +9,7 @@
 #include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/field_diagnostics.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
 
 #include <Eigen/Dense>
@@ -22,25 +23,36 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// The edges that close a singular jog: the third edge of a face whose two other edges are singular
-// (valence 3 or 5), if it is interior and regular. The map puts both singular edges on one integer
-// line, so the face's three corners are collinear and the tetrahedra of the face are flat in every
-// map (structurally_flat.h); with the edge split, the new vertex is free and no face has three
-// corners on the line.
+// The edges that close a singular jog: the third edge (a, c) of a face whose two other edges (a, b),
+// (b, c) are singular (valence 3 or 5), if it is interior and regular and if the curve goes on
+// through b along its holonomy axis w (the axis of (a, b) in world coordinates): (b - a).w and
+// (c - b).w of one sign. The map puts both singular edges on one integer line, so the face's three
+// corners are collinear and the tetrahedra of the face are flat in every map (structurally_flat.h);
+// with the edge split, the new vertex is free and no face has three corners on the line. Where the
+// curve doubles back (b not between a and c on the line), the opened tetrahedra would be inverted
+// (measured on HexMe i01c: 77 -> 154 inverted tetrahedra with every such edge split): left flat.
 template <class Traits>
-std::vector<std::uint32_t> jog_chords(const Tetrahedral_mesh_3<Traits>& mesh, const Singularity_graph& g)
+std::vector<std::uint32_t> jog_chords(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                                      const Singularity_graph& g)
 {
   const std::size_t ne = mesh.number_of_edges();
   auto singular = [&](std::uint32_t e) { return !mesh.is_boundary_edge(e) && (g.edge_valence[e] == 3 || g.edge_valence[e] == 5); };
+  auto goes_on = [&](std::uint32_t ab, std::uint32_t bc) {
+    const auto& e1 = mesh.edge_vertices(ab);
+    const auto& e2 = mesh.edge_vertices(bc);
+    const std::uint32_t b = (e1[0] == e2[0] || e1[0] == e2[1]) ? e1[0] : e1[1];
+    const std::uint32_t a = e1[0] == b ? e1[1] : e1[0], c = e2[0] == b ? e2[1] : e2[0];
+    const Eigen::Vector3d w = frames[*mesh.edge_ring(ab).begin()] * octahedral_group().axis(g.edge_holonomy[ab]);
+    return (vertex_point(mesh, b) - vertex_point(mesh, a)).dot(w) * (vertex_point(mesh, c) - vertex_point(mesh, b)).dot(w) > 0;
+  };
   std::vector<char> chord(ne, 0);
   for(std::uint32_t f = 0; f < mesh.number_of_faces(); ++f) {
     const auto& v = mesh.face_vertices(f);
     const std::array<std::uint32_t, 3> e = {{mesh.find_edge(v[1], v[2]), mesh.find_edge(v[2], v[0]), mesh.find_edge(v[0], v[1])}};
-    int count = 0;
-    for(std::uint32_t k : e) count += singular(k);
-    if(count != 2) continue;
-    for(std::uint32_t k : e)
-      if(!singular(k) && !mesh.is_boundary_edge(k)) chord[k] = 1;
+    std::array<std::uint32_t, 3> order = e;
+    std::partition(order.begin(), order.end(), singular);
+    if(!singular(order[0]) || !singular(order[1]) || singular(order[2]) || mesh.is_boundary_edge(order[2])) continue;
+    if(goes_on(order[0], order[1])) chord[order[2]] = 1;
   }
   std::vector<std::uint32_t> chords;
   for(std::uint32_t e = 0; e < ne; ++e)
@@ -108,7 +120,7 @@ template <class Traits>
 bool refine_jogs(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames, const Matchings& matchings,
                  const Singularity_graph& singularities, Refined_field<Traits>& out)
 {
-  const std::vector<std::uint32_t> chords = jog_chords(mesh, singularities);
+  const std::vector<std::uint32_t> chords = jog_chords(mesh, frames, singularities);
   if(chords.empty()) return false;
   std::vector<std::uint32_t> origin;
   const auto soup = split_edges(mesh, chords, origin);
