@@ -254,11 +254,9 @@ namespace internal {
 template <class Traits>
 double default_target_edge_length(const Tetrahedral_mesh_3<Traits>& mesh)
 {
+  // summed as the map's geometry sums them (compute_map_geometry()), bit for bit
   double volume = 0;
-  for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
-    const auto& v = mesh.tetrahedron_vertices(t);
-    volume += std::abs(CGAL::to_double(CGAL::volume(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]))));
-  }
+  for(std::size_t t = 0; t < mesh.number_of_tetrahedra(); ++t) volume += std::abs(tetrahedron_edge_matrix(mesh, t).determinant()) / 6.0;
   return std::cbrt(volume / 2000.0);
 }
 

@@ -25,6 +25,19 @@ struct Map_geometry
   std::vector<double> volumes;
 };
 
+// Rows: the edge vectors p1 - p0, p2 - p0, p3 - p0 of tetrahedron t.
+template <class Traits>
+Eigen::Matrix3d tetrahedron_edge_matrix(const Tetrahedral_mesh_3<Traits>& mesh, std::size_t t)
+{
+  const auto& tv = mesh.tetrahedron_vertices(typename Tetrahedral_mesh_3<Traits>::Index(t));
+  Eigen::Matrix3d B;
+  for(int i = 0; i < 3; ++i) {
+    const auto d = mesh.point(tv[i + 1]) - mesh.point(tv[0]);
+    B.row(i) << CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z());
+  }
+  return B;
+}
+
 template <class Traits>
 Map_geometry compute_map_geometry(const Tetrahedral_mesh_3<Traits>& mesh)
 {
@@ -35,12 +48,7 @@ Map_geometry compute_map_geometry(const Tetrahedral_mesh_3<Traits>& mesh)
   Eigen::Matrix<double, 3, 4> S;
   S << -1, 1, 0, 0, -1, 0, 1, 0, -1, 0, 0, 1;
   for(std::size_t t = 0; t < nt; ++t) {
-    const auto& tv = mesh.tetrahedron_vertices(typename Tetrahedral_mesh_3<Traits>::Index(t));
-    Eigen::Matrix3d B;
-    for(int i = 0; i < 3; ++i) {
-      const auto d = mesh.point(tv[i + 1]) - mesh.point(tv[0]);
-      B.row(i) << CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z());
-    }
+    const Eigen::Matrix3d B = tetrahedron_edge_matrix(mesh, t);
     g.volumes[t] = std::abs(B.determinant()) / 6.0;
     g.gradients[t] = B.inverse() * S;
   }
