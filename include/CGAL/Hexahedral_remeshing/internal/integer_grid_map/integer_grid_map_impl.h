@@ -76,7 +76,7 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   stage.start("seamless_map");
   Fixed_variable_solver solver;
   const Seamless_map seamless =
-    compute_seamless_map(mesh, geometry, frames, s, P, x0, flat, H, rhs, solver, o.untangle, o.untangling_rings);
+    compute_seamless_map(mesh, geometry, frames, s, P, x0, reduced.integer_column, flat, H, rhs, solver, o.untangle, o.untangling_rings);
   report_seamless_map(seamless, r);
   if(o.seamless_parameters) corner_parameters(P * seamless.y + x0, *o.seamless_parameters);
   r.seamless_seconds = stage.end();

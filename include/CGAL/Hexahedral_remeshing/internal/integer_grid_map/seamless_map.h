@@ -65,16 +65,20 @@ struct Seamless_map
 };
 
 // The minimizer of the map energy with no integer constraint; where it folds, the foldover-free
-// untangling of all its variables (around the folds, or everywhere if their rings hold more than a
-// quarter of the tetrahedra), kept if it folds fewer tetrahedra; then every
+// untangling of its continuous variables (around the folds, or everywhere if their rings hold more
+// than a quarter of the tetrahedra), kept if it folds fewer tetrahedra. The variables that will be
+// integer (boundary planes, singular lines, jumps) are held where the minimizer put them: each
+// reaches tetrahedra far from the folds (a plane, every tetrahedron on it), and moving them made the
+// local untangling a global one (B0: 2 s for 2 folds in a region of 1,413 tetrahedra). Then every
 // variable snapped to the dyadic grid (sanitize.h), so that the corner values, and with them the
 // exact orientations reported, are those of a map whose transitions hold exactly.
 template <class Traits>
 Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry,
                                   const std::vector<Eigen::Matrix3d>& frames, double s,
                                   const Eigen::SparseMatrix<double, Eigen::RowMajor>& P, const Eigen::VectorXd& x0,
-                                  const std::vector<char>& flat, const Eigen::SparseMatrix<double>& H,
-                                  const Eigen::VectorXd& rhs, Fixed_variable_solver& solver, bool untangle, int rings)
+                                  const std::vector<char>& integer_column, const std::vector<char>& flat,
+                                  const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs,
+                                  Fixed_variable_solver& solver, bool untangle, int rings)
 {
   Seamless_map m;
   solver.set_system(H, rhs);
@@ -85,7 +89,7 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
     const std::size_t nt = geometry.volumes.size();
     const std::vector<char> region = untangling_region(mesh, geometry, P * m.y + x0, flat, rings);
     const bool local = std::size_t(std::count(region.begin(), region.end(), char(1))) <= nt / 4;
-    m.untangling_ran = untangle_map(geometry, frames, s, P, x0, none, flat, m.y, local ? &region : nullptr).ran;
+    m.untangling_ran = untangle_map(geometry, frames, s, P, x0, integer_column, flat, m.y, local ? &region : nullptr).ran;
   }
   snap_to_dyadic_grid(m.y, none);
   const std::vector<CGAL::Orientation> o = parameter_orientations(P * m.y + x0);

@@ -136,11 +136,15 @@ public:
     x += m_p.x0;
   }
 
+  // Below this many elements (a local untangling around a few folds) the loops run on one thread:
+  // waking the team for every evaluation cost more than the work.
+  static constexpr std::ptrdiff_t parallel_elements = 4096;
+
   // min det K_e and the number of det K_e <= 0 (floating point), on corner values x
   std::pair<double, std::size_t> determinants(const Eigen::VectorXd& x)
   {
     const std::ptrdiff_t E = std::ptrdiff_t(m_p.number_of_elements());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(E >= parallel_elements)
     for(std::ptrdiff_t e = 0; e < E; ++e) m_det[e] = K(x, std::size_t(e)).determinant();
     double detmin = (std::numeric_limits<double>::max)();
     std::size_t inverted = 0;
@@ -156,7 +160,7 @@ public:
   {
     corners(y, m_x);
     const std::ptrdiff_t E = std::ptrdiff_t(m_p.number_of_elements());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(E >= parallel_elements)
     for(std::ptrdiff_t e = 0; e < E; ++e) {
       Eigen::Matrix3d G;
       const double f = foldover_free_element_energy(K(m_x, std::size_t(e)), epsilon, m_theta, &G);
