@@ -25,6 +25,25 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
+// Exact orientation of every tetrahedron's corner parameters (x: 12 scalars per tetrahedron, corners
+// in the mesh's vertex order; the mesh's tetrahedra are positively oriented, so NEGATIVE is inverted).
+// Epick's predicate is exact on the double inputs.
+inline std::vector<CGAL::Orientation> parameter_orientations(const Eigen::VectorXd& x)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
+  const std::size_t nt = std::size_t(x.size()) / 12;
+  std::vector<CGAL::Orientation> o(nt);
+  for(std::size_t t = 0; t < nt; ++t) {
+    std::array<Point, 4> u;
+    for(int c = 0; c < 4; ++c) {
+      const Eigen::Index i = Eigen::Index(12 * t + 3 * c);
+      u[std::size_t(c)] = Point(x[i], x[i + 1], x[i + 2]);
+    }
+    o[t] = CGAL::orientation(u[0], u[1], u[2], u[3]);
+  }
+  return o;
+}
+
 // The map handed to the extraction, from the corner scalars `x` (sanitized: every transition exact):
 // points, tetrahedra and corner parameters, then the transitions of the interior faces with their
 // integer `translation(f, k)` on the cut. Fills the exact orientation counts, the minimum relative
@@ -37,7 +56,6 @@ void assemble_map(const Tetrahedral_mesh_3<Traits>& mesh, const Matchings& match
                   Integer_grid_map& map, Result& r)
 {
   typedef typename Tetrahedral_mesh_3<Traits>::Index Index;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
   const std::size_t nt = mesh.number_of_tetrahedra();
   map = Integer_grid_map();
   map.source = mesh.source();
@@ -50,15 +68,14 @@ void assemble_map(const Tetrahedral_mesh_3<Traits>& mesh, const Matchings& match
   map.parameters.resize(nt);
   r.min_relative_jacobian = std::numeric_limits<double>::infinity();
   std::vector<char> bad_tet(nt, 0);
+  const std::vector<CGAL::Orientation> orientation = parameter_orientations(x);
   for(Index tt = 0; tt < nt; ++tt) {
     const auto& tv = mesh.tetrahedron_vertices(tt);
-    std::array<Kernel::Point_3, 4> u;
     for(int c = 0; c < 4; ++c) {
       map.tetrahedra[tt][c] = tv[c];
       map.parameters[tt][c] = x.segment<3>(Eigen::Index(12 * tt + 3 * c));
-      u[c] = Kernel::Point_3(map.parameters[tt][c][0], map.parameters[tt][c][1], map.parameters[tt][c][2]);
     }
-    const CGAL::Orientation o = CGAL::orientation(u[0], u[1], u[2], u[3]);
+    const CGAL::Orientation o = orientation[tt];
     if(o == CGAL::NEGATIVE) { ++r.inverted_tetrahedra; bad_tet[tt] = 1; }
     else if(o == CGAL::COPLANAR) { ++r.degenerate_tetrahedra; bad_tet[tt] = 1; }
     r.min_relative_jacobian = (std::min)(r.min_relative_jacobian, map_jacobian(geometry, x, tt).determinant() / (s * s * s));

@@ -6,12 +6,11 @@
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_assembly.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -23,25 +22,6 @@
 namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
-
-// Exact orientation of every tetrahedron's corner parameters (x: 12 scalars per tetrahedron, corners
-// in the mesh's vertex order; the mesh's tetrahedra are positively oriented, so NEGATIVE is inverted).
-// Epick's predicate is exact on the double inputs.
-inline std::vector<CGAL::Orientation> parameter_orientations(const Eigen::VectorXd& x)
-{
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
-  const std::size_t nt = std::size_t(x.size()) / 12;
-  std::vector<CGAL::Orientation> o(nt);
-  for(std::size_t t = 0; t < nt; ++t) {
-    std::array<Point, 4> u;
-    for(int c = 0; c < 4; ++c) {
-      const Eigen::Index i = Eigen::Index(12 * t + 3 * c);
-      u[std::size_t(c)] = Point(x[i], x[i + 1], x[i + 2]);
-    }
-    o[t] = CGAL::orientation(u[0], u[1], u[2], u[3]);
-  }
-  return o;
-}
 
 // The corner parameters of the scalars `x` (12 per tetrahedron), one array per tetrahedron.
 inline void corner_parameters(const Eigen::VectorXd& x, std::vector<std::array<Eigen::Vector3d, 4> >& parameters)
@@ -84,10 +64,11 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
   solver.set_system(H, rhs);
   if(!solver.solve(m.y)) { m.success = false; m.y = Eigen::VectorXd::Zero(P.cols()); return m; }
   const std::vector<char> none(std::size_t(P.cols()), 0);
-  m.inverted_before_untangling = count_non_positive_jacobians(geometry, P * m.y + x0);
-  if(untangle && count_non_positive_jacobians(geometry, P * m.y + x0, &flat) > 0) {
+  const Eigen::VectorXd x = P * m.y + x0;
+  m.inverted_before_untangling = count_non_positive_jacobians(geometry, x);
+  if(untangle && count_non_positive_jacobians(geometry, x, &flat) > 0) {
     const std::size_t nt = geometry.volumes.size();
-    const std::vector<char> region = untangling_region(mesh, geometry, P * m.y + x0, flat, rings);
+    const std::vector<char> region = untangling_region(mesh, geometry, x, flat, rings);
     const bool local = std::size_t(std::count(region.begin(), region.end(), char(1))) <= nt / 4;
     m.untangling_ran = untangle_map(geometry, frames, s, P, x0, integer_column, flat, m.y, local ? &region : nullptr).ran;
   }
