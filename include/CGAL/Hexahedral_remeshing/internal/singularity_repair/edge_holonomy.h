@@ -72,6 +72,39 @@ signed char classify_edge(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& 
 
 inline bool is_singular_class(signed char c) { return c >= 0 && c != 4; }
 
+// The valence a quarter-turn edge of class c reads as where its angle alone decides it, as in
+// compute_singularity_graph() (which the map's report of the field follows): +1 for valence 3, -1 for
+// valence 5, 0 when the edge is nearly perpendicular to its axis (|cos| <= 1/4) or not a quarter turn.
+// A jog 60 degrees off its axis reads as valence 3 or 5 by the side it leans to; between two edges of
+// a curve leaning to opposite sides the curve runs backwards, which folds every map along it.
+template <class Mesh>
+signed char edge_lean(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, typename Mesh::Index e, int G, signed char c)
+{
+  if(c == 3) return 1;
+  if(c == 5) return -1;
+  if(c != JOG_CLASS) return 0;
+  const double cosine = holonomy_axis_cosine(mesh, frames, e, G);
+  return std::abs(cosine) > 0.25 ? (cosine > 0 ? 1 : -1) : 0;
+}
+
+// An interior vertex where a curve of two quarter-turn edges turns from one lean to the other (a
+// zipper as compute_singularity_graph() sees it, jogs included).
+template <class Mesh>
+bool is_leaning_zipper(const Mesh& mesh, const std::vector<signed char>& edge_class, const std::vector<signed char>& lean,
+                       typename Mesh::Index v)
+{
+  if(mesh.is_boundary_vertex(v)) return false;
+  signed char first = 0;
+  int degree = 0;
+  for(auto e : mesh.vertex_edges(v)) {
+    if(!is_singular_class(edge_class[e])) continue;
+    if(edge_class[e] == IMPROPER_CLASS || ++degree > 2 || lean[e] == 0) return false;
+    if(degree == 1) first = lean[e];
+    else if(lean[e] == first) return false;
+  }
+  return degree == 2;
+}
+
 // What a vertex is from the classes of its edges; the values of the vertex reasons of
 // Meshability_reason (DANGLING_END = 2 ... BOUNDARY_CONTACT = 5).
 struct Vertex_singularity

@@ -8,7 +8,8 @@
 // the frames re-optimized with the repaired matchings fixed (the realignment's solver, directions = the
 // normals the frames already follow). The result is kept only if it is no worse, both with the kept
 // matchings and from the frames alone (their closest matchings, what any reader of the frames sees),
-// in all graph defects and in those of the curves themselves, and better in one of them.
+// in all graph defects and in those of the curves themselves, and better in one of them; and the
+// non-meshable locations the map will report of it must not grow.
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_REALIGNED_FIELD_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_REALIGNED_FIELD_H
 
@@ -40,6 +41,17 @@ struct Compared_defects
   bool better_than(const Compared_defects& o) const { return no_worse_than(o) && (graph < o.graph || curves < o.curves); }
 };
 
+// The non-meshable locations the map reports of a field (diagnose_field(): improper edges, dangling
+// ends, zippers of compute_singularity_graph(), which reads a jog by the side it leans to); the
+// strict check counts a curve that runs backwards between two jogs as two jogs only.
+template <class Traits>
+std::size_t map_graph_defects(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                              const Matchings& matchings)
+{
+  const Singularity_graph g = compute_singularity_graph(mesh, frames, matchings);
+  return g.improper_edges + g.dangling_vertices.size() + g.zipper_vertices.size();
+}
+
 // The check of the frames with their own closest matchings.
 template <class Traits>
 Local_meshability_report frame_check(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames)
@@ -69,7 +81,8 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
     const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired).counts);
     const Compared_defects alone(frame_check(mesh, reoptimized).counts);
     r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
-                 (kept.better_than(kept_before) || alone.better_than(alone_before));
+                 (kept.better_than(kept_before) || alone.better_than(alone_before)) &&
+                 map_graph_defects(mesh, reoptimized, repaired) <= map_graph_defects(mesh, frames, matchings);
     if(r.accepted) {
       frames.swap(reoptimized);
       matchings = std::move(repaired);

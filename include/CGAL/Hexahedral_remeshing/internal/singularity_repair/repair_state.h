@@ -51,6 +51,7 @@ public:
     const std::size_t ne = mesh.number_of_edges();
     m_holonomy.assign(ne, -1);
     m_class.assign(ne, -1);
+    m_lean.assign(ne, 0);
     double total = 0;
     for(Index e = 0; e < ne; ++e) {
       const auto& ev = mesh.edge_vertices(e);
@@ -58,6 +59,7 @@ public:
       if(mesh.is_boundary_edge(e)) continue;
       m_holonomy[e] = edge_holonomy(mesh, m_matching, e);
       m_class[e] = classify(e, m_holonomy[e]);
+      m_lean[e] = lean(e, m_holonomy[e], m_class[e]);
     }
     m_mean_length = ne > 0 ? total / double(ne) : 1.0;
   }
@@ -105,7 +107,13 @@ public:
     }
   }
 
-  double vertex_cost(Index v) const { return vertex_cost(vertex_singularity(m_mesh, m_class, v)); }
+  // A vertex where the curve turns from one lean to the other costs as a zipper: the map reports it
+  // as one (see edge_lean()).
+  double vertex_cost(Index v) const
+  {
+    const double c = vertex_cost(vertex_singularity(m_mesh, m_class, v));
+    return c == 0 && is_leaning_zipper(m_mesh, m_class, m_lean, v) ? 10 : c;
+  }
 
   // The change of the cost if face f had matching g (infinite if a boundary edge's valence changes).
   double evaluate(Index f, int g)
@@ -135,10 +143,15 @@ public:
       c[i] = classify(edges[i], G[i]);
       after += edge_cost(edges[i], c[i], G[i]);
     }
-    std::array<signed char, 3> saved;
-    for(int i = 0; i < 3; ++i) { saved[i] = m_class[edges[i]]; m_class[edges[i]] = c[i]; }
+    std::array<signed char, 3> saved, saved_lean;
+    for(int i = 0; i < 3; ++i) {
+      saved[i] = m_class[edges[i]];
+      saved_lean[i] = m_lean[edges[i]];
+      m_class[edges[i]] = c[i];
+      m_lean[edges[i]] = c[i] < 0 ? 0 : lean(edges[i], G[i], c[i]);
+    }
     for(Index v : fv) after += vertex_cost(v);
-    for(int i = 0; i < 3; ++i) m_class[edges[i]] = saved[i];
+    for(int i = 0; i < 3; ++i) { m_class[edges[i]] = saved[i]; m_lean[edges[i]] = saved_lean[i]; }
     m_matching[f] = old;
     return keeps_valences ? after - before : std::numeric_limits<double>::infinity();
   }
@@ -168,6 +181,7 @@ public:
       if(m_mesh.is_boundary_edge(e)) continue;
       m_holonomy[e] = edge_holonomy(m_mesh, m_matching, e);
       m_class[e] = classify(e, m_holonomy[e]);
+      m_lean[e] = lean(e, m_holonomy[e], m_class[e]);
     }
   }
 
@@ -175,6 +189,7 @@ public:
 
 private:
   signed char classify(Index e, int G) const { return classify_edge(m_mesh, m_frames, e, G); }
+  signed char lean(Index e, int G, signed char c) const { return edge_lean(m_mesh, m_frames, e, G, c); }
   int boundary_valence(Index e) const { return achieved_boundary_valence(m_mesh, m_frames, m_matching, *m_directions, e); }
 
   const Mesh& m_mesh;
@@ -183,6 +198,7 @@ private:
   const std::vector<Eigen::Vector3d>* m_directions;
   std::vector<int> m_holonomy;
   std::vector<signed char> m_class;
+  std::vector<signed char> m_lean; // edge_lean() per interior edge
   double m_mean_length = 1;
 };
 
