@@ -1,21 +1,22 @@
 #!/usr/bin/env bash
-# One row per model: hexmesh remesh (prescribed valences, and --baseline, and --repair) on every model of
+# One row per model: hexmesh remesh (prescribed valences with the default repair of the field, and --baseline,
+# and --no-repair) on every model of
 # ../shared/data (or the files given), with the outcome, the stage a failed run failed at, the defects of the
 # field's local meshability check before and after the repair, hex count, scaled Jacobian, Hausdorff distance,
 # feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory.
-#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--repair-too] [--timeout S] [FILE or FOLDER...]
+#   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE or FOLDER...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/remesh_table"
 mkdir -p "$out"
-modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -eq 1 ] && modes+=(repair)
+modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -eq 1 ] && modes+=(no_repair)
 printf '%-28s %-10s %8s %7s %-17s %-12s %9s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects minSJ meanSJ \
   hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB
 for f in "${files[@]}"; do
   name=$(basename "$f"); name="${name%.*}"
   for mode in "${modes[@]}"; do
-    flag=(); [ "$mode" = baseline ] && flag=(--baseline); [ "$mode" = repair ] && flag=(--repair)
+    flag=(); [ "$mode" = baseline ] && flag=(--baseline); [ "$mode" = no_repair ] && flag=(--no-repair)
     json="$out/$name.$mode.json"; rm -f "$json"
     /usr/bin/time -f '%M' -o "$out/$name.$mode.mem" timeout "$limit" "$hexmesh" remesh "$f" "${flag[@]}" --quiet \
       --keep-partial --out "$out/$name.$mode.mesh" --json "$json" > /dev/null 2> "$out/$name.$mode.err"

@@ -72,8 +72,11 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 /// Remeshes a solid with hexahedra by the method of Desobry et al. (*Frame Fields with Prescribed
 /// Boundary Singularity Graph for Hexahedral Meshing*): boundary edge valences (heuristic or
 /// prescribed) -> boundary direction constraints (Alg. 1 and 2) -> smooth frame field -> matchings and
-/// singularity graph -> realignment with the normals (Sec. 3.3) -> seamless integer-grid map (Sec. 3.4)
-/// -> hex extraction (HexEx, Lyon et al. 2016) -> untangling and smoothing -> check.
+/// singularity graph -> realignment with the normals (Sec. 3.3) -> repair of the singularity graph
+/// (`repair_singularity_graph()`, named parameter `singularity_repair`) -> seamless integer-grid map
+/// (Sec. 3.4) -> hex extraction (HexEx, Lyon et al. 2016) -> untangling and smoothing -> check. When the
+/// repaired field gives no valid hex mesh, the field without the repair is tried and kept if its mesh
+/// is valid (`Hexahedral_remeshing_result::repair_fallback`).
 ///
 /// \tparam Input `Hexahedral_remeshing::Tetrahedral_mesh_3<Traits>`, a CGAL
 ///         `Mesh_complex_3_in_triangulation_3` (its cells, surface patches, feature curves and corners;

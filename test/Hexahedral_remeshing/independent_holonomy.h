@@ -58,12 +58,59 @@ struct Edge_verdict
   int kind = 4;
 };
 
+// The reading of a map that accepts edges up to about 75.5 degrees off their axis (|cos| > 1/4: valence 3
+// or 5 by the sign), where an edge nearly perpendicular to its axis takes the valence of a singular edge
+// at one of its vertices whose axis is within 45 degrees of its own (repeatedly), and is improper if
+// none: non-meshable are its improper edges, dangling ends and zippers (two singular edges of different
+// valences at an interior vertex, an improper one included).
+struct Lenient_verdict
+{
+  std::size_t improper = 0, zippers = 0, dangling = 0;
+  std::size_t defects() const { return improper + zippers + dangling; }
+};
+
 struct Field_verdict
 {
   std::vector<Edge_verdict> singular; // the non-regular interior edges
   std::size_t improper = 0, jogs = 0, zippers = 0, dangling = 0;
   std::size_t defects() const { return improper + jogs + zippers + dangling; }
+  Lenient_verdict lenient;
 };
+
+struct Lenient_edge
+{
+  std::array<std::size_t, 2> vertices;
+  int valence = 0;         // 3, 5, 0 (improper or not yet decided)
+  bool perpendicular = false;
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+};
+
+inline Lenient_verdict lenient_reading(std::vector<Lenient_edge> edges, const std::set<std::size_t>& boundary_vertices)
+{
+  std::map<std::size_t, std::vector<std::size_t> > at;
+  for(std::size_t i = 0; i < edges.size(); ++i)
+    for(std::size_t v : edges[i].vertices) at[v].push_back(i);
+  for(bool changed = true; changed;) {
+    changed = false;
+    for(Lenient_edge& e : edges) {
+      if(!e.perpendicular || e.valence != 0) continue;
+      for(std::size_t v : e.vertices)
+        for(std::size_t n : at[v]) {
+          const Lenient_edge& o = edges[n];
+          if(&o == &e || (o.valence != 3 && o.valence != 5) || std::abs(o.axis.dot(e.axis)) < std::sqrt(0.5)) continue;
+          if(e.valence == 0) { e.valence = o.valence; changed = true; }
+        }
+    }
+  }
+  Lenient_verdict r;
+  for(const Lenient_edge& e : edges) r.improper += (e.valence == 0);
+  for(const auto& a : at) {
+    if(boundary_vertices.count(a.first)) continue;
+    if(a.second.size() == 1) ++r.dangling;
+    if(a.second.size() == 2 && edges[a.second[0]].valence != edges[a.second[1]].valence) ++r.zippers;
+  }
+  return r;
+}
 
 // step(ti, tj): g with E_ti ~ E_tj g for face-adjacent tetrahedra.
 template <class Step>
@@ -105,6 +152,7 @@ Field_verdict evaluate(const std::vector<Eigen::Vector3d>& points, const std::ve
   };
   Field_verdict verdict;
   std::map<std::size_t, std::vector<std::pair<int, double> > > at_vertex; // kind, signed s
+  std::vector<Lenient_edge> lenient;
   for(const auto& et : edge_tets) {
     const Edge e = et.first;
     if(boundary_edges.count(e)) continue;
@@ -128,6 +176,8 @@ Field_verdict evaluate(const std::vector<Eigen::Vector3d>& points, const std::ve
     Edge_verdict v;
     v.vertices = {{e.first, e.second}};
     double s = 0;
+    Lenient_edge l;
+    l.vertices = v.vertices;
     if(std::abs(G.trace() - 1) > 1e-9) {
       v.kind = 0;
       ++verdict.improper;
@@ -138,7 +188,11 @@ Field_verdict evaluate(const std::vector<Eigen::Vector3d>& points, const std::ve
       s = axis.dot(d);
       if(std::abs(s) < std::sqrt(0.5)) { v.kind = 1; ++verdict.jogs; }
       else v.kind = s > 0 ? 3 : 5;
+      l.axis = axis;
+      if(std::abs(s) > 0.25) l.valence = s > 0 ? 3 : 5;
+      else l.perpendicular = true;
     }
+    lenient.push_back(l);
     verdict.singular.push_back(v);
     for(std::size_t x : {e.first, e.second}) at_vertex[x].push_back({v.kind, s});
   }
@@ -148,6 +202,7 @@ Field_verdict evaluate(const std::vector<Eigen::Vector3d>& points, const std::ve
     if(av.second.size() == 2 && av.second[0].first >= 3 && av.second[1].first >= 3 && av.second[0].first != av.second[1].first)
       ++verdict.zippers;
   }
+  verdict.lenient = lenient_reading(lenient, boundary_vertices);
   return verdict;
 }
 

@@ -142,14 +142,18 @@ py_check report "$tmp/f.json"
 py_check frames "$tmp/f.vtk" "$tmp/f.json"
 py_check singularities "$tmp/s.vtk" "$tmp/f.json"
 py_check cubecover "$tmp/cc" "$tmp/f.json"
-# the local meshability check by reason, before and after the repair, in the summary and the JSON; --repair
+# the local meshability check by reason, before and after the repair (run by default), in the summary and
+# the JSON; --no-repair; --repair with --no-repair is a usage error
 grep -q "meshability         before the repair: " "$tmp/out" && grep -q "meshability         final field: " "$tmp/out" \
   || fail "frames summary lacks the meshability check: $(cat "$tmp/out")"
+grep -q "repair              .* face matchings changed" "$tmp/out" || fail "frames: the repair did not run by default: $(cat "$tmp/out")"
 grep -q '"meshability": {"before_repair": {"improper_edge": ' "$tmp/f.json" || fail "frames JSON lacks meshability"
-grep -q '"repair": {"performed": false' "$tmp/f.json" || fail "frames JSON: the repair ran without --repair"
-"$hexmesh" frames "$n13c" --repair --json "$tmp/f_repair.json" > "$tmp/out" 2> "$tmp/err" || fail "frames --repair exit code $?"
-grep -q "repair              .* face matchings changed" "$tmp/out" || fail "frames --repair: $(cat "$tmp/out")"
-grep -q '"repair": {"performed": true' "$tmp/f_repair.json" || fail "frames --repair JSON: repair not performed"
+grep -q '"repair": {"performed": true, "accepted": ' "$tmp/f.json" || fail "frames JSON: the repair did not run by default"
+"$hexmesh" frames "$n13c" --no-repair --json "$tmp/f_norepair.json" > "$tmp/out" 2> "$tmp/err" || fail "frames --no-repair exit code $?"
+grep -q "repair              not run (--no-repair)" "$tmp/out" || fail "frames --no-repair: $(cat "$tmp/out")"
+grep -q '"repair": {"performed": false' "$tmp/f_norepair.json" || fail "frames --no-repair JSON: the repair ran"
+"$hexmesh" frames "$n13c" --repair --no-repair > "$tmp/out" 2> "$tmp/err"
+[ $? -eq 2 ] && grep -q "exclude each other" "$tmp/err" || fail "--repair --no-repair: $(cat "$tmp/err")"
 "$hexmesh" info "$tmp/cc.mesh" > /dev/null 2>&1 || fail "the CubeCover .mesh does not read back"
 # the written valences read back (vertex indices of f.vtk): same prescription with the geometric heuristic
 "$hexmesh" frames "$n13c" --heuristic geometric --valences "$tmp/f_valences.txt" --no-realign --quiet \
@@ -422,6 +426,11 @@ for part in "${long_parts[@]}"; do
     || fail "$part: $(tail -1 "$tmp/err")"
   "$py" "$root/test/Hexahedral_remeshing/check_feature_coverage.py" "$tmp/$part.mesh" "$inputs/$part.step" "$tmp/$part.json" \
     > "$tmp/coverage" || fail "$part feature coverage: $(cat "$tmp/coverage")"
+  # a mesh from the field without the repair (the repaired one gave none) says so, with what the repaired one gave
+  "$py" -c 'import json, sys; r = json.load(open(sys.argv[1]))
+ok = not r["repair_fallback"] or (not r["meshability"]["repair"]["performed"] and r["repaired_field_outcome"].split()[0] in ("INVALID_HEX_MESH", "NO_HEXAHEDRA"))
+sys.exit(0 if ok and (r["repair_fallback"] or r["repaired_field_outcome"] == "") else 1)' "$tmp/$part.json" \
+    || fail "$part: repair_fallback and the field it reports disagree"
 done
 
 # smooth trusts no hex mesh (issue 29): a grid written in the mirrored vertex order, one with every other

@@ -243,7 +243,10 @@ template <class NP = CGAL::parameters::Default_named_parameters>
 Map_run run(const Mesh& m, const NP& np = CGAL::parameters::default_values())
 {
   Map_run r;
-  r.field = HR::compute_frame_field_pipeline(m);
+  // The field without the repair of its singularity graph (on by default since it no longer breaks a
+  // shared model's hex mesh): a fixed input for the map, on which the known counts below were measured;
+  // the default field is guarded end to end (remesh_shared_models) and by test_singularity_repair.
+  r.field = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(false));
   r.report = HR::compute_integer_grid_map(m, r.field, r.map, np);
   r.check = check_run(m, r);
   return r;

@@ -46,7 +46,7 @@ inline std::vector<std::string> frames_options()
   return options;
 }
 
-inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "repair", "no-chord-split", "no-acute-grading", "quiet"}; }
+inline std::vector<std::string> frames_flags() { return {"baseline", "no-realign", "repair", "no-repair", "no-chord-split", "no-acute-grading", "quiet"}; }
 
 // Pipeline visitor: per-stage progress on stderr (stages over a second), smoothing notes.
 struct Frames_progress_visitor : CGAL::Hexahedral_remeshing::Frame_field_pipeline_visitor
@@ -81,7 +81,9 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   o.heuristic = heuristic_option(args);
   o.baseline = args.has("baseline");
   o.realign = !args.has("no-realign");
-  o.repair = args.has("repair");
+  if(args.has("repair") && args.has("no-repair")) throw Usage_error("--repair and --no-repair exclude each other");
+  // the repair runs by default, except on the baseline (the paper's comparison field, kept as it is)
+  o.repair = o.baseline ? args.has("repair") : !args.has("no-repair");
   if(args.has("greedy-rounding")) o.quantization = CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::GREEDY_ROUNDING;
   o.quiet = args.has("quiet");
   if(args.has("acute-edge-band")) {
@@ -201,16 +203,23 @@ inline std::string meshability_counts(const std::array<std::size_t, CGAL::Hexahe
 }
 
 // The local meshability check before and after the repair, and the repair's operations.
-inline void print_meshability(std::ostream& out, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& r)
+// `fallback`: the field is the one without the repair because the repaired one gave no valid hex mesh.
+inline void print_meshability(std::ostream& out, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& r,
+                              bool fallback = false)
 {
   out << "  meshability         before the repair: " << meshability_counts(r.meshability_before.counts) << "\n";
   if(r.repaired) {
     std::ostringstream ops;
     for(const auto& o : r.repair.operations) if(o.second > 0) ops << (ops.tellp() > 0 ? ", " : "") << o.first << " " << o.second;
     out << "  repair              " << r.repair.changed_faces << " face matchings changed (" << (ops.tellp() > 0 ? ops.str() : std::string("no operation"))
-        << "), " << std::fixed << std::setprecision(3) << r.repair.seconds << " s\n" << std::defaultfloat;
+        << "), " << std::fixed << std::setprecision(3) << r.repair.seconds << " s"
+        << (r.repair.changed_faces > 0 && !r.repair.accepted ? "; not kept (no better, or more non-meshable locations for the map)" : "")
+        << "\n" << std::defaultfloat;
   } else {
-    out << "  repair              not run (--repair runs it)\n";
+    out << "  repair              "
+        << (fallback ? "left out (see the repair fallback below)"
+                     : std::string("not run (") + (r.baseline ? "--repair runs it on the baseline" : "--no-repair") + ")")
+        << "\n";
   }
   out << "  meshability         final field: " << meshability_counts(r.meshability.counts) << "\n";
 }
@@ -232,7 +241,8 @@ inline void add_meshability(Json& json, const CGAL::Hexahedral_remeshing::Frame_
   add_meshability_counts(json, "after_surgery", r.repaired ? r.repair.defects_after : r.meshability_before.counts);
   add_meshability_counts(json, "final", r.meshability.counts);
   json.value("final_graph_defects", r.meshability.graph_defects());
-  json.begin("repair").value("performed", r.repaired).value("changed_faces", r.repair.changed_faces);
+  json.begin("repair").value("performed", r.repaired).value("accepted", r.repaired && r.repair.accepted)
+    .value("changed_faces", r.repair.changed_faces);
   for(const auto& o : r.repair.operations) json.value(o.first, o.second);
   json.value("seconds", r.repair.seconds).end();
   json.end();

@@ -34,7 +34,7 @@ inline std::vector<std::string> parametrize_options()
   return options;
 }
 
-inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "greedy-rounding", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 // The --target-edge-length option: a positive number of model units, 0 when absent (default size).
 inline double target_edge_length_option(const Arguments& args)

@@ -33,7 +33,7 @@ inline std::vector<std::string> remesh_options()
   return options;
 }
 
-inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "greedy-rounding", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 inline int command_remesh(const Arguments& args)
 {
@@ -108,7 +108,8 @@ inline int command_remesh(const Arguments& args)
     const HR::Frame_field_pipeline_result& f = r.frame_field;
     Json json;
     json.begin().value("input", in).value("output", write_hexes ? out : std::string()).value("status", HR::status_name(r.status))
-        .value("message", r.message).value("failed_stage", r.failed_stage).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra);
+        .value("message", r.message).value("failed_stage", r.failed_stage).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra)
+        .value("repair_fallback", r.repair_fallback).value("repaired_field_outcome", r.repaired_field_outcome);
     json.begin("frame_field")
         .value("energy", f.frame_field.energy)
         .value("E_initial", f.constraints.initial_energy)
@@ -180,7 +181,10 @@ inline int command_remesh(const Arguments& args)
                                          : "; " + std::to_string(f.fixed_frames.size()) +
                                              " frames fixed around acute valence-1 edges")
               << "\n";
-    print_meshability(std::cout, f);
+    print_meshability(std::cout, f, r.repair_fallback);
+    if(r.repair_fallback)
+      std::cout << "  repair fallback     the repaired field gave " << r.repaired_field_outcome
+                << "; this hex mesh is the field's without the repair\n";
     print_integer_grid_map(std::cout, r.map, r.map_check, agreement);
     if(hexes.number_of_hexahedra() > 0) {
       print_hexahedral_mesh_check(std::cout, r.check);

@@ -145,11 +145,11 @@ struct Frame_field_pipeline_result
 ///       with `maximum_repair_steps` if given). After the realignment, the surgery uses the realigned frames,
 ///       the frames are re-optimized with the repaired matchings fixed (the realignment's solver), and the
 ///       result is kept only if it is no worse with the kept matchings and from the frames alone, and
-///       better in one (`Singularity_repair_result::accepted`); without realignment, the matchings of the
+///       better in one, and the non-meshable locations the map reports of it (improper edges, dangling ends,
+///       zippers of `compute_singularity_graph()`) do not grow (`Singularity_repair_result::accepted`); without realignment, the matchings of the
 ///       field of step 3 are repaired in place}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false` (opt-in: on several shared models the greedy rounding of the map folds more
-///       tetrahedra on the repaired field, see the manual)}
+///     \cgalParamDefault{`true`, except with `baseline(true)` (the paper's comparison field, kept as it is)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{acute_edge_band_radius}
 ///     \cgalParamDescription{radius, in model units, of a band around the boundary edges of prescribed
@@ -250,7 +250,7 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
     r.realigned = true;
     visitor.end_stage("realignment", r.realignment.seconds);
   }
-  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), false)) {
+  if(choose_parameter(get_parameter(np, internal_np::singularity_repair), !r.baseline)) {
     visitor.start_stage("repair");
     if(r.realigned) {
       r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, np,

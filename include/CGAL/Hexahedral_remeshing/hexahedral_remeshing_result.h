@@ -110,6 +110,12 @@ struct Hexahedral_remeshing_result
   std::string failure_reason;
   /// Tetrahedra of the mesh the pipeline ran on (after the preprocessing of the input).
   std::size_t tetrahedra = 0;
+  /// True if the hex mesh of the repaired field (the default, `singularity_repair`) was not valid while
+  /// the field without the repair gives a valid one: this result, hex mesh and `frame_field` are then
+  /// those of the field without the repair (`frame_field.repaired` false).
+  bool repair_fallback = false;
+  /// With `repair_fallback`: the status, failed stage and message of the run on the repaired field.
+  std::string repaired_field_outcome;
   /// Valences, constraints, frame field, matchings, singularity graph, realignment.
   Frame_field_pipeline_result frame_field;
   /// Report of the integer-grid map (target edge length used, status, inverted tetrahedra, ...).
