@@ -1,7 +1,8 @@
 // Tests of the local meshability check and of the repair of the singularity graph, checked against
 // the independent evaluation of the holonomies of independent_holonomy.h (not the package's flags):
 // a field with one straight valence-3 axis (meshable, left bitwise unchanged), the same field with a
-// zigzag (repaired back to the straight axis), and every model of ../shared/data (never worse).
+// zigzag (repaired back to the straight axis), a small closed loop with a zipper (removed), and every model of
+// ../shared/data (never worse).
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
@@ -179,6 +180,64 @@ TEST(Meshability, ZigzagRepairedToTheStraightAxis)
     EXPECT_EQ(s.kind, straight.singular[0].kind); // the same valence
   }
   EXPECT_EQ(matchings.face_matching[zigzag_face], original);
+}
+
+// A closed singular loop inside kuhn_box, in the plane x = y: the triangle (0,0,2), (0,0,6), (2,2,6), whose
+// faces carry a quarter turn about z (the frames are all the identity). Its two lower sides both leave the
+// vertex (0,0,2) upwards within 45 degrees of z, with opposite holonomies: a valence-3 edge turning into a
+// valence-5 one (a zipper); its top side is perpendicular to z (two jogs). A loop of a few edges has no place
+// in a hex mesh: the repair must remove it with its zipper, back to the field without singularity that
+// the frames say.
+TEST(Meshability, ZipperOfASmallLoopRemovedWithItsLoop)
+{
+  const Mesh m = kuhn_box();
+  const std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra(), Eigen::Matrix3d::Identity());
+  const auto points = points_of(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const std::vector<int> plain = matchings.face_matching;
+  const HR::internal::Octahedral_group& group = HR::internal::octahedral_group();
+  int quarter = -1;
+  for(int g = 0; g < 24; ++g)
+    if((group.matrix(g) - Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix()).norm() < 1e-9) quarter = g;
+  ASSERT_GE(quarter, 0);
+  auto centroid = [&](const std::vector<Index>& vs) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(Index v : vs) c += points[v];
+    return Eigen::Vector3d(c / double(vs.size()));
+  };
+  std::size_t sheet = 0;
+  for(Index f = 0; f < m.number_of_faces(); ++f) {
+    if(m.is_boundary_face(f)) continue;
+    const auto& fv = m.face_vertices(f);
+    bool in_plane = true;
+    for(Index v : fv) in_plane = in_plane && points[v].x() == points[v].y();
+    const Eigen::Vector3d c = centroid({fv[0], fv[1], fv[2]});
+    if(!in_plane || c.x() < 0 || c.x() > (c.z() - 2) / 2 || c.z() > 6) continue;
+    const auto& ft = m.face_tetrahedra(f);
+    const auto& tv = m.tetrahedron_vertices(ft[0]);
+    const Eigen::Vector3d c0 = centroid({tv[0], tv[1], tv[2], tv[3]});
+    matchings.face_matching[f] = c0.x() < c0.y() ? quarter : group.inverse(quarter);
+    ++sheet;
+  }
+  ASSERT_EQ(sheet, 4u);
+  const auto loop = evaluate_matchings(m, frames, matchings);
+  ASSERT_EQ(loop.singular.size(), 6u);
+  EXPECT_EQ(loop.zippers, 1u);
+  EXPECT_EQ(loop.jogs, 2u);
+  EXPECT_EQ(loop.improper + loop.dangling, 0u);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  EXPECT_EQ(check.count(HR::Meshability_reason::ZIPPER), 1u);
+  EXPECT_EQ(check.count(HR::Meshability_reason::JOG), 2u);
+
+  const auto r = HR::repair_singularity_graph(m, frames, matchings);
+  EXPECT_EQ(r.defects_before[std::size_t(HR::Meshability_reason::ZIPPER)], 1u);
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(repaired.singular.size(), 0u);
+  EXPECT_EQ(repaired.defects(), 0u);
+  EXPECT_EQ(HR::check_local_meshability(m, frames, matchings).total(), 0u); // no face disagrees with its frames
+  EXPECT_TRUE(matchings.face_matching == plain);
+  std::printf("loop: %zu singular edges (%zu zipper, %zu jogs) -> %zu, %zu faces changed\n", loop.singular.size(), loop.zippers,
+              loop.jogs, repaired.singular.size(), r.changed_faces);
 }
 
 TEST(Meshability, SingularitiesFileCarriesTheReasonPerEdge)
