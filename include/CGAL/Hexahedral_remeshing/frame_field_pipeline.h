@@ -253,15 +253,15 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   if(choose_parameter(get_parameter(np, internal_np::singularity_repair), !r.baseline)) {
     visitor.start_stage("repair");
     if(r.realigned) {
-      r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, np,
+      r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, r.singularities, np,
                    parameters::tetrahedron_order(order, parameters::face_weights(
                      choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE))));
     } else {
       r.repair = repair_singularity_graph(mesh, r.frames, r.matchings, r.directions, np);
+      // an unchanged field keeps its graph bitwise
+      if(r.repair.accepted) r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
     }
     r.repaired = true;
-    // an unchanged field keeps its graph bitwise
-    if(r.repair.accepted) r.singularities = compute_singularity_graph(mesh, r.frames, r.matchings);
     visitor.end_stage("repair", r.repair.seconds);
   }
   r.meshability = check_local_meshability(mesh, r.frames, r.matchings, r.valences,

@@ -16,6 +16,14 @@
 
 namespace CGAL {
 namespace Hexahedral_remeshing {
+namespace internal {
+
+// A quarter-turn edge whose |cos| to its holonomy axis exceeds this reads as valence 3 or 5 by the sign
+// in compute_singularity_graph() (up to about 75.5 degrees off the axis); nearer perpendicular, it is a
+// jog that takes a neighbour's valence.
+constexpr double lenient_axis_cosine = 0.25;
+
+} // namespace internal
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Matchings of a frame field: for each interior face `f` with tetrahedra `(t0, t1) =
@@ -150,7 +158,7 @@ Singularity_graph compute_singularity_graph(const Tetrahedral_mesh_3<Traits>& me
       // axis occur on perfectly valid curves (measured on TetGen cylinders); an edge nearly
       // perpendicular to the axis (more than ~75.5 degrees, |cos| < 1/4) is a jog of a curve whose
       // valence is decided below from its neighbours.
-      if(std::abs(c) > 0.25) valence = c > 0 ? 3 : 5;
+      if(std::abs(c) > internal::lenient_axis_cosine) valence = c > 0 ? 3 : 5;
       else jogs.push_back(e);
     }
     g.edge_valence[e] = valence;

@@ -9,6 +9,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_EDGE_HOLONOMY_H
 
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
+#include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 
 #include <CGAL/number_utils.h>
 
@@ -84,7 +85,7 @@ signed char edge_lean(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& fram
   if(c == 5) return -1;
   if(c != JOG_CLASS) return 0;
   const double cosine = holonomy_axis_cosine(mesh, frames, e, G);
-  return std::abs(cosine) > 0.25 ? (cosine > 0 ? 1 : -1) : 0;
+  return std::abs(cosine) > lenient_axis_cosine ? (cosine > 0 ? 1 : -1) : 0;
 }
 
 // An interior vertex where a curve of two quarter-turn edges turns from one lean to the other (a

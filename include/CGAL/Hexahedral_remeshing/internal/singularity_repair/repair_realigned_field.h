@@ -41,14 +41,11 @@ struct Compared_defects
   bool better_than(const Compared_defects& o) const { return no_worse_than(o) && (graph < o.graph || curves < o.curves); }
 };
 
-// The non-meshable locations the map reports of a field (diagnose_field(): improper edges, dangling
-// ends, zippers of compute_singularity_graph(), which reads a jog by the side it leans to); the
+// The non-meshable locations the map reports of a field with graph g (diagnose_field(): improper edges,
+// dangling ends, zippers of compute_singularity_graph(), which reads a jog by the side it leans to); the
 // strict check counts a curve that runs backwards between two jogs as two jogs only.
-template <class Traits>
-std::size_t map_graph_defects(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
-                              const Matchings& matchings)
+inline std::size_t map_graph_defects(const Singularity_graph& g)
 {
-  const Singularity_graph g = compute_singularity_graph(mesh, frames, matchings);
   return g.improper_edges + g.dangling_vertices.size() + g.zipper_vertices.size();
 }
 
@@ -59,10 +56,12 @@ Local_meshability_report frame_check(const Tetrahedral_mesh_3<Traits>& mesh, con
   return check_local_meshability(mesh, frames, compute_matchings(mesh, frames));
 }
 
+// `singularities`: replaced by the repaired field's graph if that is kept (left as it is otherwise: the
+// pipeline keeps an unchanged field's graph bitwise).
 // `realignment_np`: the named parameters of the realignment (solver order, face weights).
 template <class Traits, class NamedParameters, class RealignmentParameters>
 Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
-                                                 Matchings& matchings, const NamedParameters& np,
+                                                 Matchings& matchings, Singularity_graph& singularities, const NamedParameters& np,
                                                  const RealignmentParameters& realignment_np)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -80,12 +79,14 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
     realign_frame_field(mesh, reoptimized, repaired, normals, realignment_np);
     const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired).counts);
     const Compared_defects alone(frame_check(mesh, reoptimized).counts);
+    Singularity_graph graph = compute_singularity_graph(mesh, reoptimized, repaired);
     r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
                  (kept.better_than(kept_before) || alone.better_than(alone_before)) &&
-                 map_graph_defects(mesh, reoptimized, repaired) <= map_graph_defects(mesh, frames, matchings);
+                 map_graph_defects(graph) <= map_graph_defects(compute_singularity_graph(mesh, frames, matchings));
     if(r.accepted) {
       frames.swap(reoptimized);
       matchings = std::move(repaired);
+      singularities = std::move(graph);
       r.graph_defects_after = kept.graph;
       r.frame_graph_defects_after = alone.graph;
     }
