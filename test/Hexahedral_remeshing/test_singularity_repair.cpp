@@ -1,7 +1,8 @@
 // Tests of the local meshability check and of the repair of the singularity graph, checked against
 // the independent evaluation of the holonomies of independent_holonomy.h (not the package's flags):
 // a field with one straight valence-3 axis (meshable, left bitwise unchanged), the same field with a
-// zigzag (repaired back to the straight axis), a small closed loop with a zipper (removed), and every model of
+// zigzag (repaired back to the straight axis), a small closed loop with a zipper (removed), a close pair of
+// valence-3 and valence-5 curves (removed at the hex scale), and every model of
 // ../shared/data (never worse).
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
@@ -238,6 +239,108 @@ TEST(Meshability, ZipperOfASmallLoopRemovedWithItsLoop)
   EXPECT_TRUE(matchings.face_matching == plain);
   std::printf("loop: %zu singular edges (%zu zipper, %zu jogs) -> %zu, %zu faces changed\n", loop.singular.size(), loop.zippers,
               loop.jogs, repaired.singular.size(), r.changed_faces);
+}
+
+namespace {
+
+int quarter_turn_about_z()
+{
+  const HR::internal::Octahedral_group& group = HR::internal::octahedral_group();
+  for(int g = 0; g < 24; ++g)
+    if((group.matrix(g) - Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix()).norm() < 1e-9) return g;
+  return -1;
+}
+
+// Gives every interior face of kuhn_box in the plane y = 0 with x0 < x < x1 (all heights) `power`
+// quarter turns about z, crossing from y < 0 to y > 0 (the frames all the identity): the lines
+// x = x0 and x = x1 of that plane become singular curves from bottom to top; around the strip's two
+// sides the holonomies are opposite (a valence-3 curve beside a valence-5 one) when the strip is
+// interior.
+void add_strip(const Mesh& m, HR::Matchings& matchings, double x0, double x1, int power)
+{
+  const auto points = points_of(m);
+  const HR::internal::Octahedral_group& group = HR::internal::octahedral_group();
+  const int quarter = quarter_turn_about_z();
+  for(Index f = 0; f < m.number_of_faces(); ++f) {
+    if(m.is_boundary_face(f)) continue;
+    const auto& fv = m.face_vertices(f);
+    double x = 0;
+    bool in_plane = true;
+    for(Index v : fv) { in_plane = in_plane && points[v].y() == 0; x += points[v].x() / 3; }
+    if(!in_plane || x < x0 || x > x1) continue;
+    const auto& tv = m.tetrahedron_vertices(m.face_tetrahedra(f)[0]);
+    double y0 = 0;
+    for(Index v : tv) y0 += points[v].y();
+    int g = HR::internal::Octahedral_group::identity_index;
+    for(int k = 0; k < power; ++k) g = group.multiply(quarter, g);
+    matchings.face_matching[f] = group.multiply(y0 < 0 ? g : group.inverse(g), matchings.face_matching[f]);
+  }
+}
+
+} // namespace
+
+// Two straight singular curves one unit apart in kuhn_box, a valence-3 one beside a valence-5 one, from
+// the bottom to the top: each is locally meshable, but a map with hex edges longer than their distance
+// has no room between them. The repair at that hex scale removes the pair (back to the field without
+// singularity that the identity frames say); at a hex edge shorter than their distance, or without a hex
+// size, it keeps them bitwise. Two curves of one valence as close cannot cancel and are kept.
+TEST(Meshability, CloseThreeFivePairRemovedAtTheHexScale)
+{
+  const Mesh m = kuhn_box();
+  const std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra(), Eigen::Matrix3d::Identity());
+  const auto points = points_of(m);
+  const std::vector<Eigen::Vector3d> normals = HR::boundary_triangle_unit_normals(m);
+  ASSERT_GE(quarter_turn_about_z(), 0);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const std::vector<int> plain = matchings.face_matching;
+  add_strip(m, matchings, 0, 1, 1);
+  const std::vector<int> pair = matchings.face_matching;
+  const auto before = evaluate_matchings(m, frames, matchings);
+  ASSERT_EQ(before.singular.size(), 8u);
+  EXPECT_EQ(before.defects(), 0u);
+  std::map<double, std::set<int> > kinds; // x of the curve -> valences of its edges
+  for(const auto& e : before.singular) {
+    const Eigen::Vector3d& a = points[e.vertices[0]];
+    const Eigen::Vector3d& b = points[e.vertices[1]];
+    ASSERT_TRUE(a.y() == 0 && b.y() == 0 && a.x() == b.x() && (a.x() == 0 || a.x() == 1));
+    kinds[a.x()].insert(e.kind);
+  }
+  ASSERT_EQ(kinds.size(), 2u);
+  EXPECT_EQ(kinds[0].size(), 1u);
+  EXPECT_EQ(kinds[1].size(), 1u);
+  EXPECT_EQ(*kinds[0].begin() + *kinds[1].begin(), 8); // one valence 3, the other 5
+  EXPECT_EQ(HR::check_local_meshability(m, frames, matchings).graph_defects(), 0u);
+
+  for(double h : {0., 0.5}) { // no hex size; hex edges shorter than the distance: kept
+    const auto r = HR::repair_singularity_graph(m, frames, matchings, normals, HR::parameters::repair_hex_edge_length(h));
+    EXPECT_EQ(r.changed_faces, 0u) << h;
+    EXPECT_EQ(r.simplified_clusters, 0u) << h;
+    EXPECT_TRUE(matchings.face_matching == pair) << h;
+  }
+  const auto r = HR::repair_singularity_graph(m, frames, matchings, normals, HR::parameters::repair_hex_edge_length(1.5));
+  EXPECT_EQ(r.simplified_clusters, 1u);
+  const auto after = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(after.singular.size(), 0u);
+  EXPECT_EQ(after.defects(), 0u);
+  EXPECT_TRUE(matchings.face_matching == plain);
+  EXPECT_EQ(HR::check_local_meshability(m, frames, matchings).total(), 0u);
+
+  // two valence-3 (or two valence-5) curves at x = 0 and x = 1: strips from the boundary x = -3 to each
+  HR::Matchings same = HR::compute_matchings(m, frames);
+  add_strip(m, same, -3, 0, 1);
+  add_strip(m, same, -3, 1, 1);
+  const std::vector<int> same_before = same.face_matching;
+  const auto parallel = evaluate_matchings(m, frames, same);
+  ASSERT_EQ(parallel.singular.size(), 8u);
+  EXPECT_EQ(parallel.defects(), 0u);
+  std::set<int> valences;
+  for(const auto& e : parallel.singular) valences.insert(e.kind);
+  EXPECT_EQ(valences.size(), 1u);
+  const auto kept = HR::repair_singularity_graph(m, frames, same, normals, HR::parameters::repair_hex_edge_length(1.5));
+  EXPECT_EQ(kept.simplified_clusters, 0u);
+  EXPECT_TRUE(same.face_matching == same_before);
+  std::printf("3-5 pair: %zu singular edges -> %zu (%zu faces changed); 3-3 pair kept: %zu singular edges\n",
+              before.singular.size(), after.singular.size(), r.changed_faces, evaluate_matchings(m, frames, same).singular.size());
 }
 
 TEST(Meshability, SingularitiesFileCarriesTheReasonPerEdge)

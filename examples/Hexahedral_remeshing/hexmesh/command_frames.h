@@ -250,11 +250,12 @@ inline void add_meshability(Json& json, const CGAL::Hexahedral_remeshing::Frame_
 
 // Runs the frame-field pipeline with progress; an impossible prescription stays an Input_error (exit 3),
 // any other failure becomes a Stage_error (exit 4). `band`: radius of the fixed frames along acute
-// valence-1 edges when --acute-edge-band is absent.
+// valence-1 edges when --acute-edge-band is absent; `hex_edge`: the map's hex edge length, at which the
+// repair simplifies the singular curves (0: frames alone, no map to come).
 inline CGAL::Hexahedral_remeshing::Frame_field_pipeline_result
 run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, const Mesh& mesh,
                          const std::vector<std::pair<Mesh::Index, int> >& prescribed, Progress& progress,
-                         double band = 0)
+                         double band = 0, double hex_edge = 0)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
@@ -263,7 +264,7 @@ run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, co
     return HR::compute_frame_field_pipeline(
       mesh, HP::valence_heuristic(o.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
                                   HP::baseline(o.baseline, HP::realignment(o.realign, HP::singularity_repair(o.repair,
-                                  HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band)))))).visitor(std::ref(visitor)));
+                                  HP::repair_hex_edge_length(hex_edge, HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band))))))).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {

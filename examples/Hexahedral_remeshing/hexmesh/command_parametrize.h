@@ -208,8 +208,8 @@ inline int command_parametrize(const Arguments& args)
   const double read_seconds = read_frame_field_input(args, in, mesh, prescribed, progress, &size);
   // the band of fixed frames along acute edges is the one of remesh (two hex edges), so that the map
   // written here is the one remesh extracts
-  const double band = 2 * HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
-  const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, band);
+  const double hex_edge = HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
+  const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, 2 * hex_edge, hex_edge);
   HR::Integer_grid_map map;
   const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization);
   progress.start("checking the map");

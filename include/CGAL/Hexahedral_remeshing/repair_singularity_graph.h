@@ -13,6 +13,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/local_matching_search.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/move_singular_edge.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/simplify_at_hex_scale.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_jog.h>
 
 #include <Eigen/Dense>
@@ -30,18 +31,24 @@ namespace Hexahedral_remeshing {
 namespace internal_np {
 enum singularity_repair_t { singularity_repair };
 enum maximum_repair_steps_t { maximum_repair_steps };
+enum repair_hex_edge_length_t { repair_hex_edge_length };
 } // namespace internal_np
 
 namespace parameters {
 #ifdef DOXYGEN_RUNNING
-/// Pipeline: repair the singularity graph of the realigned field (`bool`, default `false`).
+/// Pipeline: repair the singularity graph of the realigned field (`bool`, default `true`, `false` with
+/// `baseline(true)`).
 template <class T> unspecified_type singularity_repair(const T& value);
 /// Repair: maximum number of defects visited by the matching surgery (`std::size_t`, default
 /// `20 * (defects + 100)`).
 template <class T> unspecified_type maximum_repair_steps(const T& value);
+/// Repair: the hex edge length of the map to come (model units, default `0`: no hex-scale
+/// simplification); `hexahedral_remeshing()` passes its own.
+template <class T> unspecified_type repair_hex_edge_length(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(singularity_repair)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_repair_steps)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(repair_hex_edge_length)
 #endif
 } // namespace parameters
 
@@ -58,6 +65,9 @@ struct Singularity_repair_result
   std::vector<std::pair<std::string, std::size_t> > operations;
   /// Faces whose matching differs from the input matching at the end.
   std::size_t changed_faces = 0;
+  /// Clusters of singular curves removed by the hex-scale simplification (named parameter
+  /// `repair_hex_edge_length`): curves within a hex edge of each other, loops and stubs smaller than one.
+  std::size_t simplified_clusters = 0;
   /// In the pipeline (`compute_frame_field_pipeline()`), which repairs the realigned field and
   /// re-optimizes its frames: true if the repaired field was kept (no worse with the kept matchings and
   /// from the frames alone, better in one), false if the field was left as the realignment made it.
@@ -118,6 +128,15 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
 /// its boundary edges stays the same (a singular curve's end slides along the boundary); without
 /// them, such faces are never changed.
 ///
+/// At the hex scale (named parameter `repair_hex_edge_length` = h > 0), after the surgery
+/// (`"simplify_at_hex_scale"`, counted in clusters): a connected set of singular curves whose bounding
+/// box is smaller than h (a small loop, a short stub between two boundary points), and two sets within
+/// h of each other everywhere (Hausdorff distance; a valence-3 curve beside a valence-5 one), have no
+/// room in a map of hex edge h. Such a cluster is removed by making the field flat in a region around
+/// it (every face there gets the matching of one gauge carried across the region's collar), where the
+/// collar is flat itself (no other curve crosses it; the holonomies of the cluster cancel), no
+/// achieved boundary valence changes and the cost goes down; otherwise the cluster stays.
+///
 /// The frames are not changed: re-optimize them with the repaired matchings fixed
 /// (`realign_frame_field()`, which `compute_frame_field_pipeline()` runs after the repair).
 ///
@@ -126,7 +145,7 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
 /// \param matchings the kept matchings, repaired in place
 /// \param directions empty, or one direction per boundary triangle: those the boundary frames follow
 ///        (the constraints `v` before the realignment, the normals after it)
-/// \param np optional named parameters: `maximum_repair_steps`
+/// \param np optional named parameters: `maximum_repair_steps`, `repair_hex_edge_length`
 /// \returns the defects by reason before and after, the changes by operation, the seconds
 /// \throws Error if `frames` or `matchings` are not sized for `mesh`.
 template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -147,12 +166,18 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
   const std::vector<int> input = matchings.face_matching;
   if(!directions.empty() && directions.size() != mesh.number_of_boundary_triangles())
     throw Error("repair_singularity_graph: one direction per boundary triangle expected");
-  if(defects > 0) {
+  const double hex_edge = choose_parameter(get_parameter(np, internal_np::repair_hex_edge_length), 0.);
+  if(defects > 0 || hex_edge > 0) {
     const auto operations = internal::singularity_repair_operations<Mesh>();
     internal::Singularity_repair_state<Mesh> state(mesh, frames, matchings.face_matching, directions.empty() ? nullptr : &directions);
-    std::vector<std::size_t> applied;
+    std::vector<std::size_t> applied, again;
     internal::greedy_surgery(state, operations, max_steps, applied);
-    for(std::size_t k = 0; k < operations.size(); ++k) r.operations.emplace_back(operations[k]->name(), applied[k]);
+    r.simplified_clusters = internal::simplify_at_hex_scale(state, hex_edge);
+    // a removed cluster may leave defects of its neighbours free to go
+    if(r.simplified_clusters > 0) internal::greedy_surgery(state, operations, max_steps, again);
+    for(std::size_t k = 0; k < operations.size(); ++k)
+      r.operations.emplace_back(operations[k]->name(), applied[k] + (again.empty() ? 0 : again[k]));
+    r.operations.emplace_back("simplify_at_hex_scale", r.simplified_clusters);
   }
   for(std::size_t f = 0; f < input.size(); ++f) r.changed_faces += (input[f] != matchings.face_matching[f]);
   r.defects_after = r.changed_faces > 0 ? check_local_meshability(mesh, frames, matchings).counts : r.defects_before;

@@ -145,7 +145,9 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   // the band that keeps singular curves off acute edges of valence 1: two hexahedra wide unless given
   double band = choose_parameter(get_parameter(np, internal_np::acute_edge_band_radius), -1.);
   if(band < 0) band = 2 * pipeline_hex_edge_length(mesh, np);
-  r.frame_field = compute_frame_field_pipeline(mesh, parameters::acute_edge_band_radius(band, np));
+  // the repair removes curves that have no room at the hex size
+  const double repair_h = choose_parameter(get_parameter(np, internal_np::repair_hex_edge_length), pipeline_hex_edge_length(mesh, np));
+  r.frame_field = compute_frame_field_pipeline(mesh, parameters::repair_hex_edge_length(repair_h, parameters::acute_edge_band_radius(band, np)));
 
   // Hex size: target_edge_length, else number_of_hexahedra, else the map's own default.
   double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), 0.);

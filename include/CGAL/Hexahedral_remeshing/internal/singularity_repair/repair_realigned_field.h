@@ -8,7 +8,8 @@
 // the frames re-optimized with the repaired matchings fixed (the realignment's solver, directions = the
 // normals the frames already follow). The result is kept only if it is no worse, both with the kept
 // matchings and from the frames alone (their closest matchings, what any reader of the frames sees),
-// in all graph defects and in those of the curves themselves, and better in one of them; and the
+// in all graph defects and in those of the curves themselves, and better in one of them or simpler at
+// the hex scale (a cluster of curves with no room in the map removed); and the
 // non-meshable locations the map will report of it must not grow.
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_REALIGNED_FIELD_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_REALIGNED_FIELD_H
@@ -81,7 +82,7 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
     const Compared_defects alone(frame_check(mesh, reoptimized).counts);
     Singularity_graph graph = compute_singularity_graph(mesh, reoptimized, repaired);
     r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
-                 (kept.better_than(kept_before) || alone.better_than(alone_before)) &&
+                 (kept.better_than(kept_before) || alone.better_than(alone_before) || r.simplified_clusters > 0) &&
                  map_graph_defects(graph) <= map_graph_defects(compute_singularity_graph(mesh, frames, matchings));
     if(r.accepted) {
       frames.swap(reoptimized);

@@ -186,6 +186,20 @@ public:
   }
 
   int holonomy(Index e) const { return m_holonomy[e]; }
+  double mean_edge_length() const { return m_mean_length; }
+  const std::vector<Eigen::Matrix3d>& frames() const { return m_frames; }
+
+  // The cost of the given edges and vertices as the field stands.
+  double local_cost(const std::vector<Index>& edges, const std::vector<Index>& vertices) const
+  {
+    double c = 0;
+    for(Index e : edges) c += edge_cost(e, m_class[e], m_holonomy[e]);
+    for(Index v : vertices) c += vertex_cost(v);
+    return c;
+  }
+
+  // The valence boundary edge e achieves (Eq. 3) with the present matchings; -1 without directions.
+  int achieved_valence(Index e) const { return m_directions == nullptr ? -1 : boundary_valence(e); }
 
 private:
   signed char classify(Index e, int G) const { return classify_edge(m_mesh, m_frames, e, G); }
