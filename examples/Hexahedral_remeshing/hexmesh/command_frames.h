@@ -244,6 +244,9 @@ inline void add_meshability(Json& json, const CGAL::Hexahedral_remeshing::Frame_
   json.begin("repair").value("performed", r.repaired).value("accepted", r.repaired && r.repair.accepted)
     .value("changed_faces", r.repair.changed_faces);
   for(const auto& o : r.repair.operations) json.value(o.first, o.second);
+  json.begin("hex_scale").value("clusters", r.repair.hex_scale_clusters).value("removed", r.repair.simplified_clusters);
+  for(const auto& k : r.repair.hex_scale_kept) json.value(k.first, k.second);
+  json.end();
   json.value("seconds", r.repair.seconds).end();
   json.end();
 }

@@ -65,9 +65,15 @@ struct Singularity_repair_result
   std::vector<std::pair<std::string, std::size_t> > operations;
   /// Faces whose matching differs from the input matching at the end.
   std::size_t changed_faces = 0;
-  /// Clusters of singular curves removed by the hex-scale simplification (named parameter
+  /// Clusters of singular curves with no room at the hex scale (named parameter
   /// `repair_hex_edge_length`): curves within a hex edge of each other, loops and stubs smaller than one.
+  std::size_t hex_scale_clusters = 0;
+  /// Those of `hex_scale_clusters` that the repair removed.
   std::size_t simplified_clusters = 0;
+  /// Why the others stay, (reason, count): `"too_large"` (region over the size limit),
+  /// `"collar_not_flat"` (another curve crosses the region's collar, or the holonomies do not cancel),
+  /// `"not_editable"`, `"boundary_valence"` (an achieved boundary valence would change), `"not_cheaper"`.
+  std::vector<std::pair<std::string, std::size_t> > hex_scale_kept;
   /// In the pipeline (`compute_frame_field_pipeline()`), which repairs the realigned field and
   /// re-optimizes its frames: true if the repaired field was kept (no worse with the kept matchings and
   /// from the frames alone, better in one), false if the field was left as the realignment made it.
@@ -172,7 +178,11 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
     internal::Singularity_repair_state<Mesh> state(mesh, frames, matchings.face_matching, directions.empty() ? nullptr : &directions);
     std::vector<std::size_t> applied, again;
     internal::greedy_surgery(state, operations, max_steps, applied);
-    r.simplified_clusters = internal::simplify_at_hex_scale(state, hex_edge);
+    const internal::Hex_scale_simplification s = internal::simplify_at_hex_scale(state, hex_edge);
+    r.hex_scale_clusters = s.clusters;
+    r.simplified_clusters = s.removed;
+    r.hex_scale_kept = {{"too_large", s.too_large}, {"collar_not_flat", s.collar_not_flat}, {"not_editable", s.not_editable},
+                        {"boundary_valence", s.boundary_valence}, {"not_cheaper", s.not_cheaper}};
     // a removed cluster may leave defects of its neighbours free to go
     if(r.simplified_clusters > 0) internal::greedy_surgery(state, operations, max_steps, again);
     for(std::size_t k = 0; k < operations.size(); ++k)

@@ -34,6 +34,30 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
+// What became of a cluster: removed, or why it stays.
+enum class Flattening { REMOVED, TOO_LARGE, COLLAR_NOT_FLAT, NOT_EDITABLE, BOUNDARY_VALENCE, NOT_CHEAPER };
+
+// The clusters with no room at the hex scale, and what became of them.
+struct Hex_scale_simplification
+{
+  std::size_t clusters = 0, removed = 0;
+  // why the others stay: region over the size limit, another curve crossing the collar (or holonomies
+  // that do not cancel), a face that may not change, a boundary valence that would change, no gain
+  std::size_t too_large = 0, collar_not_flat = 0, not_editable = 0, boundary_valence = 0, not_cheaper = 0;
+  void count(Flattening f)
+  {
+    ++clusters;
+    switch(f) {
+      case Flattening::REMOVED: ++removed; break;
+      case Flattening::TOO_LARGE: ++too_large; break;
+      case Flattening::COLLAR_NOT_FLAT: ++collar_not_flat; break;
+      case Flattening::NOT_EDITABLE: ++not_editable; break;
+      case Flattening::BOUNDARY_VALENCE: ++boundary_valence; break;
+      case Flattening::NOT_CHEAPER: ++not_cheaper; break;
+    }
+  }
+};
+
 // A connected set of singular edges (curves joined at their nodes), with its bounding box.
 struct Singular_component
 {
@@ -159,12 +183,12 @@ std::vector<typename Mesh::Index> flattening_region(const Mesh& mesh, const std:
 // Applies the changes (face, matching before) to the matchings `target(face)` if no boundary valence
 // changes and the cost of the repair goes down; restores them otherwise.
 template <class Mesh, class Target>
-bool apply_if_cheaper(Singularity_repair_state<Mesh>& state, const std::vector<std::pair<typename Mesh::Index, int> >& changes,
+Flattening apply_if_cheaper(Singularity_repair_state<Mesh>& state, const std::vector<std::pair<typename Mesh::Index, int> >& changes,
                       const Target& target)
 {
   typedef typename Mesh::Index Index;
   const Mesh& mesh = state.mesh();
-  if(changes.empty()) return false;
+  if(changes.empty()) return Flattening::NOT_CHEAPER;
   std::vector<Index> edges, vertices, boundary_edges;
   for(const auto& c : changes) {
     for(Index e : state.face_edges(c.first)) (mesh.is_boundary_edge(e) ? boundary_edges : edges).push_back(e);
@@ -178,11 +202,12 @@ bool apply_if_cheaper(Singularity_repair_state<Mesh>& state, const std::vector<s
   for(Index e : boundary_edges) valences.push_back(state.achieved_valence(e));
   const double before = state.local_cost(edges, vertices);
   for(const auto& c : changes) state.apply(c.first, target(c.first));
-  bool keep = state.local_cost(edges, vertices) < before - 1e-9;
-  for(std::size_t k = 0; keep && k < boundary_edges.size(); ++k) keep = state.achieved_valence(boundary_edges[k]) == valences[k];
-  if(!keep)
+  Flattening outcome = state.local_cost(edges, vertices) < before - 1e-9 ? Flattening::REMOVED : Flattening::NOT_CHEAPER;
+  for(std::size_t k = 0; outcome == Flattening::REMOVED && k < boundary_edges.size(); ++k)
+    if(state.achieved_valence(boundary_edges[k]) != valences[k]) outcome = Flattening::BOUNDARY_VALENCE;
+  if(outcome != Flattening::REMOVED)
     for(const auto& c : changes) state.apply(c.first, c.second);
-  return keep;
+  return outcome;
 }
 
 // The gauge of the tetrahedron across face f from tetrahedron t, whose gauge is a.
@@ -237,10 +262,9 @@ void spread_gauge_into_region(const Singularity_repair_state<Mesh>& state, const
   }
 }
 
-// Makes the field flat in `region` (see the file's comment); returns the number of faces changed, 0 if
-// the collar is not flat, a boundary valence would change or the cost would not go down (nothing changed).
+// Makes the field flat in `region` (see the file's comment), or says why not (nothing changed then).
 template <class Mesh>
-std::size_t flatten_region(Singularity_repair_state<Mesh>& state, const std::vector<typename Mesh::Index>& region)
+Flattening flatten_region(Singularity_repair_state<Mesh>& state, const std::vector<typename Mesh::Index>& region)
 {
   typedef typename Mesh::Index Index;
   const Mesh& mesh = state.mesh();
@@ -287,7 +311,7 @@ std::size_t flatten_region(Singularity_repair_state<Mesh>& state, const std::vec
     for(int i = 0; i < 4; ++i) {
       const Index n = mesh.tetrahedron_neighbor(t, i);
       if(n != Mesh::null_index && is(n, COLLAR) && state.matching(mesh.tetrahedron_face(t, i)) != gauge_matching(mesh.tetrahedron_face(t, i)))
-        return 0; // another curve crosses the collar, or the cluster's holonomies do not cancel
+        return Flattening::COLLAR_NOT_FLAT; // another curve crosses the collar, or the cluster's holonomies do not cancel
     }
   std::vector<std::pair<Index, int> > changes; // (face, matching before)
   std::unordered_map<Index, char> changed;
@@ -296,20 +320,21 @@ std::size_t flatten_region(Singularity_repair_state<Mesh>& state, const std::vec
       const Index f = mesh.tetrahedron_face(t, i);
       if(mesh.tetrahedron_neighbor(t, i) == Mesh::null_index || !changed.emplace(f, 1).second) continue;
       if(state.matching(f) == gauge_matching(f)) continue;
-      if(!state.is_editable(f)) return 0;
+      if(!state.is_editable(f)) return Flattening::NOT_EDITABLE;
       changes.emplace_back(f, state.matching(f));
     }
-  return apply_if_cheaper(state, changes, gauge_matching) ? changes.size() : 0;
+  return apply_if_cheaper(state, changes, gauge_matching);
 }
 
 // Removes the clusters of singular curves that have no room at hex edge `hex_edge_length`: a component
 // whose bounding box is smaller than a hex edge (a small loop, a short stub between boundary points),
 // and two components within a hex edge of each other everywhere (Hausdorff distance), such as a 3-5
-// pair. Returns the number of clusters removed.
+// pair.
 template <class Mesh>
-std::size_t simplify_at_hex_scale(Singularity_repair_state<Mesh>& state, double hex_edge_length)
+Hex_scale_simplification simplify_at_hex_scale(Singularity_repair_state<Mesh>& state, double hex_edge_length)
 {
-  if(!(hex_edge_length > 0)) return 0;
+  Hex_scale_simplification report;
+  if(!(hex_edge_length > 0)) return report;
   const Mesh& mesh = state.mesh();
   const std::vector<Singular_component> components = singular_components(state);
   const double h = hex_edge_length, margin = state.mean_edge_length();
@@ -327,7 +352,6 @@ std::size_t simplify_at_hex_scale(Singularity_repair_state<Mesh>& state, double 
                                   directed_hausdorff(mesh, components[j], components[i]));
       if(d < h) clusters.push_back({i, j, d + margin});
     }
-  std::size_t removed = 0;
   for(const Cluster& c : clusters) {
     // a component already removed with another cluster
     if(!is_singular_class(state.edge_class(typename Mesh::Index(components[c.a].edges[0]))) ||
@@ -336,9 +360,9 @@ std::size_t simplify_at_hex_scale(Singularity_repair_state<Mesh>& state, double 
     std::vector<const Singular_component*> cluster(1, &components[c.a]);
     if(c.b != c.a) cluster.push_back(&components[c.b]);
     const auto region = flattening_region(mesh, cluster, c.radius, maximum_size);
-    if(!region.empty() && flatten_region(state, region) > 0) ++removed;
+    report.count(region.empty() ? Flattening::TOO_LARGE : flatten_region(state, region));
   }
-  return removed;
+  return report;
 }
 
 } // namespace internal
