@@ -432,3 +432,50 @@ TEST(Meshability, CrossedCylindersFewerJogsNoZipperAdded)
   EXPECT_TRUE(r.repair.accepted);
   EXPECT_EQ(r.boundary_valences.mismatched, step3.boundary_valences.mismatched);
 }
+
+// The hexahedra around a boundary vertex, counted from the valences of its hex edges (Euler's formula
+// for the triangulated disk that is its link: F = 4 + sum (k - 2) over feature edges + sum (k - 4)
+// over singular edges, recomputed here from the prescribed valences): the corners of a box have one
+// hexahedron each and pass; the apex of the pyramid-shaped cavity of n07c_anti_pyramid, where four
+// concave edges of valence 3 meet and no singular curve ends, would need all eight octants of one
+// chart, which only an interior vertex has: the check calls it an invalid node, the only one of the model.
+TEST(Meshability, BoundaryCornersCountTheirHexahedra)
+{
+  const Mesh box = kuhn_box();
+  const auto b = HR::compute_frame_field_pipeline(box);
+  EXPECT_EQ(b.meshability.count(HR::Meshability_reason::INVALID_NODE), 0u);
+  std::size_t corners = 0;
+  for(Index v = 0; v < box.number_of_vertices(); ++v) {
+    int hexahedra = 4, features = 0;
+    for(Index e : box.vertex_edges(v))
+      if(box.is_boundary_edge(e) && b.valences[e] != 2) { hexahedra += b.valences[e] - 2; ++features; }
+    if(features == 3) { ++corners; EXPECT_EQ(hexahedra, 1); }
+  }
+  EXPECT_EQ(corners, 8u);
+
+  const std::string f = std::string(HEXREM_SHARED_DATA_DIR) + "/hexme/n07c_anti_pyramid.vtk";
+  if(!fs::exists(f)) GTEST_SKIP() << "../shared/data not present";
+  Mesh m;
+  HR::IO::read_tetrahedral_mesh(f, m, HR::parameters::split_boundary_chords(true));
+  const auto r = HR::compute_frame_field_pipeline(m);
+  const auto points = points_of(m);
+  Index apex = 0;
+  for(Index v = 1; v < m.number_of_vertices(); ++v)
+    if((points[v] - Eigen::Vector3d(0, 0, std::sqrt(2.))).norm() < (points[apex] - Eigen::Vector3d(0, 0, std::sqrt(2.))).norm()) apex = v;
+  ASSERT_LT((points[apex] - Eigen::Vector3d(0, 0, std::sqrt(2.))).norm(), 1e-6);
+  int hexahedra = 4, concave = 0;
+  for(Index e : m.vertex_edges(apex)) {
+    if(m.is_boundary_edge(e)) { hexahedra += r.valences[e] - 2; concave += r.valences[e] == 3; }
+    else EXPECT_EQ(r.singularities.edge_valence[e], 4) << "a singular curve ends at the apex";
+  }
+  EXPECT_EQ(concave, 4);
+  EXPECT_EQ(hexahedra, 8);
+  std::vector<Index> invalid;
+  for(const auto& violation : r.meshability.violations)
+    if(violation.reason == HR::Meshability_reason::INVALID_NODE) invalid.push_back(violation.index);
+  ASSERT_EQ(invalid.size(), 1u);
+  EXPECT_EQ(invalid[0], apex);
+  std::printf("n07c: apex %u with %d concave edges of valence 3: %d hexahedra; invalid nodes reported: %zu\n", unsigned(apex), concave,
+              hexahedra, invalid.size());
+}
+

@@ -35,7 +35,11 @@ enum class Meshability_reason {
   /// vertex has: the link of a hex-mesh vertex is a triangulated sphere, so the valences `k` of the
   /// hex edges at the vertex satisfy `sum (6 - k) = 12` (with `k >= 3`); with `n3` valence-3 and
   /// `n5` valence-5 edges, `12 - 3 n3 - n5` must be even and non-negative (the regular edges make up
-  /// the rest, 2 each). A necessary condition, not the full local parametrization test.
+  /// the rest, 2 each). A necessary condition, not the full local parametrization test. At a boundary
+  /// vertex (checked when the boundary valences are given), the link is a triangulated disk, whose
+  /// Euler formula gives the number of hexahedra at the vertex, `F = 4 + sum (k - 2)` over its feature
+  /// edges `+ sum (k - 4)` over its singular edges: `F >= 1`, and `F <= 7` without a singular edge
+  /// (the apex of a square pyramid, four convex edges of valence 1, has `F = 0`: a curve must end there).
   INVALID_NODE,
   /// A boundary vertex where a singular curve touches the boundary and goes on (two singular edges of
   /// the same valence, nothing ends there).
@@ -116,6 +120,39 @@ struct Local_meshability_report
 
 namespace internal {
 
+// Whether the hexahedra around boundary vertex v can be counted (design notes §1): the link of v in a
+// hex mesh is a triangulated disk (one triangle per hexahedron at v, one vertex per hex edge at v,
+// with as many triangles around it as the edge's valence k). Euler's formula for the disk,
+// sum over interior link vertices of (6 - k) + sum over boundary ones of (3 - k) = 6, gives the
+// number of hexahedra at v, F = 4 + sum over feature edges (k - 2) + sum over singular edges (k - 4),
+// the boundary edges of valence 2 and the regular interior edges (4) being free in number but not
+// negative: sum (3 - k) + sum (6 - k) <= 6 over feature and singular edges. Without a singular edge at
+// v, its hexahedra are octants of one chart, distinct and fewer than the 8 of an interior vertex:
+// 1 <= F <= 7. A square pyramid's apex (four convex edges of valence 1: F = 0) or the apex of a
+// pyramid-shaped cavity (four concave edges of valence 3: F = 8) fails: it needs a singular curve
+// ending there. `edge_class`: the classes of the interior edges (a vertex with a jog or an improper
+// edge is reported as such and passes here); `valence`: per boundary edge, its valence.
+template <class Mesh>
+bool is_meshable_boundary_corner(const Mesh& mesh, const std::vector<signed char>& edge_class, const std::vector<int>& valence,
+                                 typename Mesh::Index v)
+{
+  int hexahedra = 4, fixed = 0, singular = 0;
+  for(auto e : mesh.vertex_edges(v)) {
+    if(mesh.is_boundary_edge(e)) {
+      const int k = valence[e];
+      if(k == 2) continue;
+      hexahedra += k - 2;
+      fixed += 3 - k;
+    } else if(is_singular_class(edge_class[e])) {
+      if(edge_class[e] != 3 && edge_class[e] != 5) return true;
+      ++singular;
+      hexahedra += edge_class[e] - 4;
+      fixed += 6 - edge_class[e];
+    }
+  }
+  return hexahedra >= 1 && fixed <= 6 && (singular > 0 || hexahedra <= 7);
+}
+
 // The check of check_local_meshability(), with the achieved boundary valences given (`achieved`,
 // per edge, or null: no feature check) and the faces' check optional (`faces`: false when the
 // matchings are the frames' closest ones, where no face can disagree).
@@ -149,6 +186,8 @@ Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mes
   for(Index v = 0; v < mesh.number_of_vertices(); ++v) {
     const Vertex_singularity s = vertex_singularity(mesh, r.edge_class, v);
     if(s.kind != Vertex_singularity::NONE) add(Meshability_reason(int(s.kind)), v, point(v));
+    else if(achieved != nullptr && mesh.is_boundary_vertex(v) && !is_meshable_boundary_corner(mesh, r.edge_class, *achieved, v))
+      add(Meshability_reason::INVALID_NODE, v, point(v));
   }
   for(Index f = 0; faces && f < mesh.number_of_faces(); ++f) {
     if(mesh.is_boundary_face(f)) continue;
