@@ -116,6 +116,122 @@ Wall_thickness tetrahedral_mesh_wall_thickness(const Tetrahedral_mesh_3<Traits>&
   return wall_thickness(mesh.points(), triangles);
 }
 
+// The hex edge length the map is asked for (0: the map's own default), after refusing, before any work,
+// walls thinner than half a hexahedron (they round to no layer) and sizes that would make more
+// hexahedra than fit in memory.
+template <class Traits, class NamedParameters>
+double checked_map_edge_length(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  {
+    const double h = pipeline_hex_edge_length(mesh, np);
+    const Wall_thickness w = tetrahedral_mesh_wall_thickness(mesh);
+    if(w.thickness < minimum_wall_thickness_over_hex_edge * h)
+      throw Input_error(mesh.source(), 0, thin_wall_for_hexahedra_message(w.thickness, w.where(), h, tetrahedral_mesh_volume(mesh)));
+  }
+  // Hex size: target_edge_length, else number_of_hexahedra, else the map's own default.
+  double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), 0.);
+  const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_hexahedra), std::size_t(0)));
+  if(!(h > 0) && n > 0) h = std::cbrt(tetrahedral_mesh_volume(mesh) / n);
+  if(h > 0) {
+    const double estimate = tetrahedral_mesh_volume(mesh) / (h * h * h);
+    if(estimate > 2e7)
+      throw Input_error(mesh.source(), 0, "target_edge_length " + std::to_string(h) + " would give about " +
+                                              std::to_string(std::llround(estimate)) +
+                                              " hexahedra (at most 2e7): choose a larger edge length");
+  }
+  return h;
+}
+
+// The untangling and smoothing of the extracted hexahedra (its own parameters passed on; its visitor
+// hooks differ: the stage is reported here).
+template <class Traits, class NamedParameters, class Visitor>
+void smooth_extracted_hexahedra(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& hexes, const NamedParameters& np,
+                                Visitor& visitor, Hexahedral_remeshing_result& r)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  visitor.start_stage("hex smoothing");
+  const auto t = std::chrono::steady_clock::now();
+  r.smoothing = smooth_hexahedral_mesh(
+    hexes, make_hexahedral_smoothing_reference(mesh),
+    parameters::smoothing_sharp_angle(
+      choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.),
+      parameters::smoothing_boundary(
+        choose_parameter(get_parameter(np, internal_np::smoothing_boundary), Hexahedral_smoothing_boundary::SLIDE),
+        CGAL::parameters::number_of_iterations(
+          choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10)))));
+  r.smoothed = true;
+  visitor.end_stage("hex smoothing", std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+}
+
+// The check of the hex mesh: validity, feature fidelity, distance and volume to the solid, boundary groups.
+template <class Traits, class NamedParameters, class Visitor>
+void check_extracted_hexahedra(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& hexes, const NamedParameters& np,
+                               Visitor& visitor, Hexahedral_remeshing_result& r)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  visitor.start_stage("check");
+  const auto t = std::chrono::steady_clock::now();
+  r.check = check_hexahedral_mesh(hexes);
+  const double diagonal = bounding_box_diagonal(mesh);
+  const Feature_fidelity f = measure_feature_fidelity(mesh, r.frame_field.valences, hexes, 1e-6 * diagonal);
+  r.feature_length = f.feature_length;
+  r.feature_coverage = f.feature_length > 0 ? f.covered_length / f.feature_length : 1.;
+  r.hex_feature_edges = f.hex_feature_edges;
+  r.hex_feature_edges_with_prescribed_valence = f.valence_matched;
+  if(r.smoothed && r.smoothing.after.hausdorff_distance >= 0 && diagonal > 0)
+    r.relative_hausdorff_distance = r.smoothing.after.hausdorff_distance / diagonal;
+  const double volume = tetrahedral_mesh_volume(mesh);
+  r.volume_ratio = volume > 0 ? r.check.total_volume / volume : 0.;
+  // the groups a solver puts its loads on, read from the final positions
+  r.boundary_groups = compute_hexahedral_boundary_groups(
+    hexes, mesh, choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.));
+  r.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  visitor.end_stage("check", r.check_seconds);
+}
+
+// The status of a checked hex mesh and, if it is not OK, the message and the stage it failed at.
+template <class Traits>
+void decide_remeshing_status(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_remeshing_result& r)
+{
+  const std::size_t missing = r.extraction.incomplete_cells + r.extraction.untraced_corners;
+  // Cells dropped inside a fold of the map leave a closed cavity: a valid-looking mesh whose boundary
+  // has more components (or another genus) than the solid's.
+  const bool same_topology = r.check.boundary_components == mesh.number_of_boundary_components() &&
+                             r.check.boundary_euler_characteristic == mesh.boundary_euler_characteristic();
+  // A slit along a seam (cells on both sides, no cell across) keeps the topology but puts boundary
+  // quads deep inside the solid: the boundary is then far from the input's.
+  const bool follows_boundary = !(r.relative_hausdorff_distance > maximum_relative_hausdorff_distance);
+  if(r.check.valid && missing == 0 && same_topology && follows_boundary) {
+    r.status = Hexahedral_remeshing_status::OK;
+    return;
+  }
+  r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
+  if(r.check.valid && missing == 0 && same_topology) {
+    std::ostringstream os;
+    os << "the boundary of the hex mesh is " << r.relative_hausdorff_distance
+       << " of the diagonal away from the solid's (at most " << maximum_relative_hausdorff_distance
+       << "): boundary quads inside the solid where the integer-grid map is " << status_name(r.map.status);
+    r.message = os.str();
+  } else if(r.check.valid && missing == 0) {
+    r.message = "the boundary of the hex mesh has " + std::to_string(r.check.boundary_components) +
+                " components and Euler characteristic " + std::to_string(r.check.boundary_euler_characteristic) +
+                ", the solid's " + std::to_string(mesh.number_of_boundary_components()) + " and " +
+                std::to_string(mesh.boundary_euler_characteristic()) + " (cells missing where the integer-grid map is " +
+                status_name(r.map.status) + ")";
+  } else {
+    r.message = std::to_string(r.check.inverted_hexahedra) + " inverted hexahedra (min scaled Jacobian " +
+                std::to_string(r.check.min_scaled_jacobian) + "), " + std::to_string(r.check.non_conforming_quads) +
+                " non-conforming quads, " + std::to_string(r.extraction.incomplete_cells) +
+                " cells left out by the extraction (hex volume " + std::to_string(r.volume_ratio) +
+                " of the solid's); integer-grid map status " + status_name(r.map.status);
+  }
+  name_failed_stage(r);
+}
+
 // The paper's pipeline on a tetrahedral mesh: frame field (valences, constraints, field, matchings,
 // realignment, repair) -> integer-grid map -> extraction -> untangling and smoothing -> check. Data flows
 // forward: each stage reads only the outputs of the stages before it.
@@ -126,22 +242,15 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::get_parameter_reference;
-  typedef std::chrono::steady_clock Clock;
-  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&]() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   Hexahedral_remeshing_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-  const auto start = Clock::now();
 
   Hexahedral_remeshing_result r;
   hexes.clear();
   r.tetrahedra = mesh.number_of_tetrahedra();
-  {
-    // walls thinner than half a hexahedron round to no layer: refused before the work starts
-    const double h = pipeline_hex_edge_length(mesh, np);
-    const Wall_thickness w = tetrahedral_mesh_wall_thickness(mesh);
-    if(w.thickness < minimum_wall_thickness_over_hex_edge * h)
-      throw Input_error(mesh.source(), 0, thin_wall_for_hexahedra_message(w.thickness, w.where(), h, tetrahedral_mesh_volume(mesh)));
-  }
+  const double h = checked_map_edge_length(mesh, np);
   // the band that keeps singular curves off acute edges of valence 1: two hexahedra wide unless given
   double band = choose_parameter(get_parameter(np, internal_np::acute_edge_band_radius), -1.);
   if(band < 0) band = 2 * pipeline_hex_edge_length(mesh, np);
@@ -149,18 +258,6 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   const double repair_h = choose_parameter(get_parameter(np, internal_np::repair_hex_edge_length), pipeline_hex_edge_length(mesh, np));
   r.frame_field = compute_frame_field_pipeline(mesh, parameters::repair_hex_edge_length(repair_h, parameters::acute_edge_band_radius(band, np)));
 
-  // Hex size: target_edge_length, else number_of_hexahedra, else the map's own default.
-  double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), 0.);
-  const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_hexahedra), std::size_t(0)));
-  if(!(h > 0) && n > 0) h = std::cbrt(tetrahedral_mesh_volume(mesh) / n);
-  // a size that would make more hexahedra than fit in memory is refused before the work starts
-  if(h > 0) {
-    const double estimate = tetrahedral_mesh_volume(mesh) / (h * h * h);
-    if(estimate > 2e7)
-      throw Input_error(mesh.source(), 0, "target_edge_length " + std::to_string(h) + " would give about " +
-                                              std::to_string(std::llround(estimate)) +
-                                              " hexahedra (at most 2e7): choose a larger edge length");
-  }
   Integer_grid_map own_map;
   Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
   if(h > 0)
@@ -179,81 +276,15 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
     r.message = std::string("the integer-grid map (status ") + status_name(r.map.status) +
                 ", " + std::to_string(r.map.inverted_tetrahedra) + " inverted tetrahedra) has no complete integer cell";
     name_failed_stage(r);
-    r.seconds = seconds_since(start);
+    r.seconds = seconds();
     return r;
   }
-
   // smoothing cannot fill the cells the extraction left out: an incomplete mesh is reported as it is
-  const bool incomplete = r.extraction.incomplete_cells + r.extraction.untraced_corners > 0;
-  if(!incomplete && choose_parameter(get_parameter(np, internal_np::hexahedral_smoothing), true)) {
-    visitor.start_stage("hex smoothing");
-    const auto t = Clock::now();
-    // the smoothing's own parameters are passed on (its visitor hooks differ: the stage is reported here)
-    r.smoothing = smooth_hexahedral_mesh(
-      hexes, make_hexahedral_smoothing_reference(mesh),
-      parameters::smoothing_sharp_angle(
-        choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.),
-        parameters::smoothing_boundary(
-          choose_parameter(get_parameter(np, internal_np::smoothing_boundary), Hexahedral_smoothing_boundary::SLIDE),
-          CGAL::parameters::number_of_iterations(
-            choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10)))));
-    r.smoothed = true;
-    visitor.end_stage("hex smoothing", seconds_since(t));
-  }
-
-  visitor.start_stage("check");
-  const auto t = Clock::now();
-  r.check = check_hexahedral_mesh(hexes);
-  const double diagonal = bounding_box_diagonal(mesh);
-  const Feature_fidelity f = measure_feature_fidelity(mesh, r.frame_field.valences, hexes, 1e-6 * diagonal);
-  r.feature_length = f.feature_length;
-  r.feature_coverage = f.feature_length > 0 ? f.covered_length / f.feature_length : 1.;
-  r.hex_feature_edges = f.hex_feature_edges;
-  r.hex_feature_edges_with_prescribed_valence = f.valence_matched;
-  if(r.smoothed && r.smoothing.after.hausdorff_distance >= 0 && diagonal > 0)
-    r.relative_hausdorff_distance = r.smoothing.after.hausdorff_distance / diagonal;
-  const double volume = tetrahedral_mesh_volume(mesh);
-  r.volume_ratio = volume > 0 ? r.check.total_volume / volume : 0.;
-  // the groups a solver puts its loads on, read from the final positions
-  r.boundary_groups = compute_hexahedral_boundary_groups(
-    hexes, mesh, choose_parameter(get_parameter(np, internal_np::smoothing_sharp_angle), 30.));
-  r.check_seconds = seconds_since(t);
-  visitor.end_stage("check", r.check_seconds);
-
-  const std::size_t missing = r.extraction.incomplete_cells + r.extraction.untraced_corners;
-  // Cells dropped inside a fold of the map leave a closed cavity: a valid-looking mesh whose boundary
-  // has more components (or another genus) than the solid's.
-  const bool same_topology = r.check.boundary_components == mesh.number_of_boundary_components() &&
-                             r.check.boundary_euler_characteristic == mesh.boundary_euler_characteristic();
-  // A slit along a seam (cells on both sides, no cell across) keeps the topology but puts boundary
-  // quads deep inside the solid: the boundary is then far from the input's.
-  const bool follows_boundary = !(r.relative_hausdorff_distance > maximum_relative_hausdorff_distance);
-  if(r.check.valid && missing == 0 && same_topology && follows_boundary) {
-    r.status = Hexahedral_remeshing_status::OK;
-  } else if(r.check.valid && missing == 0 && same_topology) {
-    r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
-    std::ostringstream os;
-    os << "the boundary of the hex mesh is " << r.relative_hausdorff_distance
-       << " of the diagonal away from the solid's (at most " << maximum_relative_hausdorff_distance
-       << "): boundary quads inside the solid where the integer-grid map is " << status_name(r.map.status);
-    r.message = os.str();
-  } else if(r.check.valid && missing == 0) {
-    r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
-    r.message = "the boundary of the hex mesh has " + std::to_string(r.check.boundary_components) +
-                " components and Euler characteristic " + std::to_string(r.check.boundary_euler_characteristic) +
-                ", the solid's " + std::to_string(mesh.number_of_boundary_components()) + " and " +
-                std::to_string(mesh.boundary_euler_characteristic()) + " (cells missing where the integer-grid map is " +
-                status_name(r.map.status) + ")";
-  } else {
-    r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
-    r.message = std::to_string(r.check.inverted_hexahedra) + " inverted hexahedra (min scaled Jacobian " +
-                std::to_string(r.check.min_scaled_jacobian) + "), " + std::to_string(r.check.non_conforming_quads) +
-                " non-conforming quads, " + std::to_string(r.extraction.incomplete_cells) +
-                " cells left out by the extraction (hex volume " + std::to_string(r.volume_ratio) +
-                " of the solid's); integer-grid map status " + status_name(r.map.status);
-  }
-  if(r.status != Hexahedral_remeshing_status::OK) name_failed_stage(r);
-  r.seconds = seconds_since(start);
+  if(r.extraction.incomplete_cells + r.extraction.untraced_corners == 0 && smoothing)
+    smooth_extracted_hexahedra(mesh, hexes, np, visitor, r);
+  check_extracted_hexahedra(mesh, hexes, np, visitor, r);
+  decide_remeshing_status(mesh, r);
+  r.seconds = seconds();
   return r;
 }
 
