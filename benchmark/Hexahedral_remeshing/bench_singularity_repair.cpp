@@ -1,13 +1,15 @@
 // The repair of the singularity graph per model: defects of the local check by reason before the
 // repair, after the matching surgery, after the realignment with the repaired matchings, and from the
 // realigned frames alone (their closest matchings, what an independent reader of the frames sees);
-// the repair's seconds against the frame field's (medians of --runs runs).
+// the repair's seconds against the frame field's (medians of --runs runs). The repair runs at the
+// hex scale of the map's default size (about 2000 hexahedra), as hexahedral_remeshing() runs it.
 //   bench_singularity_repair [--runs N] FILE...   (default: every model of ../shared/data)
 // Meshes are built with split_boundary_chords(true), as hexmesh does.
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
 #include <CGAL/Hexahedral_remeshing/local_meshability.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -18,6 +20,7 @@
 
 namespace HR = CGAL::Hexahedral_remeshing;
 typedef HR::Tetrahedral_mesh_3<> Mesh;
+typedef Mesh::Index Index;
 namespace fs = std::filesystem;
 
 namespace {
@@ -34,12 +37,24 @@ std::string counts(const std::array<std::size_t, HR::number_of_meshability_reaso
   return s;
 }
 
+// The hex edge of about 2000 hexahedra (the map's default size).
+double default_hex_edge(const Mesh& mesh)
+{
+  double volume = 0;
+  for(Index t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+    const auto& v = mesh.tetrahedron_vertices(t);
+    volume += CGAL::to_double(CGAL::volume(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])));
+  }
+  return std::cbrt(volume / 2000);
+}
+
 void run(const std::string& name, const Mesh& mesh, int runs)
 {
   std::vector<double> field_seconds, repair_seconds;
   HR::Frame_field_pipeline_result r;
+  const double h = default_hex_edge(mesh);
   for(int k = 0; k < runs; ++k) {
-    r = HR::compute_frame_field_pipeline(mesh, HR::parameters::singularity_repair(true));
+    r = HR::compute_frame_field_pipeline(mesh, HR::parameters::singularity_repair(true, HR::parameters::repair_hex_edge_length(h)));
     field_seconds.push_back(r.frame_field.seconds);
     repair_seconds.push_back(r.repair.seconds);
   }
@@ -52,7 +67,8 @@ void run(const std::string& name, const Mesh& mesh, int runs)
             << std::setw(18) << counts(r.meshability.counts) << std::setw(18) << counts(alone.counts) << std::setw(7)
             << r.meshability.count(HR::Meshability_reason::DISAGREEING_FACE) << std::setw(6)
             << r.meshability.count(HR::Meshability_reason::FEATURE_SECTOR) << std::setw(14)
-            << (operations.empty() ? "-" : (r.repair.accepted ? "" : "x ") + operations) << std::fixed << std::setprecision(3) << std::setw(9)
+            << (operations.empty() ? "-" : (r.repair.accepted ? "" : "x ") + operations) << std::setw(7)
+            << (std::to_string(r.repair.simplified_clusters) + "/" + std::to_string(r.repair.hex_scale_clusters)) << std::fixed << std::setprecision(3) << std::setw(9)
             << median(repair_seconds) << std::setw(9) << median(field_seconds) << "\n" << std::defaultfloat;
 }
 
@@ -80,7 +96,8 @@ int main(int argc, char** argv)
   }
   std::cout << "defects improper/jog/zipper/node/contact: field of step 3 before the repair | realigned field after the"
                " surgery | returned field (kept matchings) | returned frames alone; disagreeing faces and feature sectors after the realignment;"
-               " changes by operation (move/zigzag/search/slide; x: not kept); seconds of the repair and of the frame field (median of "
+               " changes by operation (move/zigzag/search/slide/hex scale; x: not kept); clusters of curves removed/found at the"
+               " hex scale; seconds of the repair and of the frame field (median of "
             << runs << ")\n";
   for(const std::string& f : files) {
     Mesh mesh;

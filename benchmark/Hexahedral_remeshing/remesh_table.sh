@@ -2,7 +2,8 @@
 # One row per model: hexmesh remesh (prescribed valences with the default repair of the field, and --baseline,
 # and --no-repair) on every model of
 # ../shared/data (or the files given), with the outcome, the stage a failed run failed at, the defects of the
-# field's local meshability check before and after the repair and what became of the repair, hex count, scaled Jacobian, Hausdorff distance,
+# field's local meshability check before and after the repair and what became of the repair (with the clusters of
+# curves removed / found at the hex scale), hex count, scaled Jacobian, Hausdorff distance,
 # feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory.
 #   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE or FOLDER...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
@@ -11,7 +12,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/remesh_table"
 mkdir -p "$out"
 modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -eq 1 ] && modes+=(no_repair)
-printf '%-28s %-10s %8s %7s %-17s %-12s %9s %-9s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects repair minSJ meanSJ \
+printf '%-28s %-10s %8s %7s %-17s %-12s %9s %-13s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects repair minSJ meanSJ \
   hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB
 for f in "${files[@]}"; do
   name=$(basename "$f"); name="${name%.*}"
@@ -40,8 +41,11 @@ rep = m.get('repair', {}) if m else {}
 # kept / not kept (changed, no better) / no change / off; fallback: the mesh is the unrepaired field's
 repair = ('fallback' if r.get('repair_fallback') else 'kept' if rep.get('accepted') else
           'no change' if rep.get('performed') and rep.get('changed_faces', 0) == 0 else 'not kept' if rep.get('performed') else 'off')
+# hex-scale simplification: clusters of curves with no room at the hex size, removed/found
+hs = rep.get('hex_scale', {})
+if hs.get('clusters'): repair += ' %d/%d' % (hs.get('removed', 0), hs['clusters'])
 hd = f['relative_hausdorff_distance']  # null without a smoothed mesh
-print('%-28s %-10s %8d %7d %-17s %-12s %9s %-9s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f' % (
+print('%-28s %-10s %8d %7d %-17s %-12s %9s %-13s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f' % (
     name, mode, r['tetrahedra'], h['hexahedra'], r['status'], r.get('failed_stage') or '-', defects, repair,
     h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
     '-' if hd is None else '%.2e' % hd, f['coverage'],

@@ -431,6 +431,11 @@ for part in "${long_parts[@]}"; do
 ok = not r["repair_fallback"] or (not r["meshability"]["repair"]["performed"] and r["repaired_field_outcome"].split()[0] in ("INVALID_HEX_MESH", "NO_HEXAHEDRA"))
 sys.exit(0 if ok and (r["repair_fallback"] or r["repaired_field_outcome"] == "") else 1)' "$tmp/$part.json" \
     || fail "$part: repair_fallback and the field it reports disagree"
+  # the repair at the hex scale accounts for every cluster it found: removed, or kept for one reason
+  "$py" -c 'import json, sys; h = json.load(open(sys.argv[1]))["meshability"]["repair"]["hex_scale"]
+kept = sum(h[k] for k in ("too_large", "collar_not_flat", "not_editable", "boundary_valence", "not_cheaper"))
+sys.exit(0 if h["removed"] + kept == h["clusters"] else 1)' "$tmp/$part.json" \
+    || fail "$part: the hex-scale clusters of the repair do not add up"
 done
 
 # smooth trusts no hex mesh (issue 29): a grid written in the mirrored vertex order, one with every other
