@@ -253,7 +253,7 @@ Frame_field_pipeline_result compute_frame_field_pipeline(const Tetrahedral_mesh_
   if(choose_parameter(get_parameter(np, internal_np::singularity_repair), !r.baseline)) {
     visitor.start_stage("repair");
     if(r.realigned) {
-      r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, r.singularities, np,
+      r.repair = internal::repair_realigned_field(mesh, r.frames, r.matchings, r.singularities, r.valences, np,
                    parameters::tetrahedron_order(order, parameters::face_weights(
                      choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE))));
     } else {

@@ -29,7 +29,7 @@ bool is_edge_defect(const Singularity_repair_state<Mesh>& state, typename Mesh::
 template <class Mesh>
 bool is_vertex_defect(const Singularity_repair_state<Mesh>& state, typename Mesh::Index v)
 {
-  return vertex_singularity(state.mesh(), state.edge_classes(), v).kind != Vertex_singularity::NONE;
+  return vertex_singularity(state.mesh(), state.edge_classes(), v).kind != Vertex_singularity::NONE || state.is_invalid_boundary_corner(v);
 }
 
 // Queues the defects of the edges and vertices of face f and of the edges at its vertices.

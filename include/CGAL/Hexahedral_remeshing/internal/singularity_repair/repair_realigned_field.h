@@ -58,19 +58,21 @@ Local_meshability_report frame_check(const Tetrahedral_mesh_3<Traits>& mesh, con
 }
 
 // `singularities`: replaced by the repaired field's graph if that is kept (left as it is otherwise: the
-// pipeline keeps an unchanged field's graph bitwise).
+// pipeline keeps an unchanged field's graph bitwise). `prescribed`: per edge, the prescribed valence of
+// the boundary edges: with it the kept matchings are compared with the whole check (the hexahedra at
+// the boundary vertices and the sectors at feature curves too).
 // `realignment_np`: the named parameters of the realignment (solver order, face weights).
 template <class Traits, class NamedParameters, class RealignmentParameters>
 Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
-                                                 Matchings& matchings, Singularity_graph& singularities, const NamedParameters& np,
-                                                 const RealignmentParameters& realignment_np)
+                                                 Matchings& matchings, Singularity_graph& singularities, const std::vector<int>& prescribed,
+                                                 const NamedParameters& np, const RealignmentParameters& realignment_np)
 {
   const auto start = std::chrono::steady_clock::now();
   Matchings repaired = matchings;
   const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
   Singularity_repair_result r = repair_singularity_graph(mesh, frames, repaired, normals, np);
   // the surgery's own check of the realigned field with the kept matchings
-  const Compared_defects kept_before(r.defects_before);
+  const Compared_defects kept_before(check_local_meshability(mesh, frames, matchings, prescribed, normals).counts);
   const Compared_defects alone_before(frame_check(mesh, frames).counts);
   r.graph_defects_before = r.graph_defects_after = kept_before.graph;
   r.frame_graph_defects_before = r.frame_graph_defects_after = alone_before.graph;
@@ -78,7 +80,7 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
   if(r.changed_faces > 0) {
     std::vector<Eigen::Matrix3d> reoptimized = frames;
     realign_frame_field(mesh, reoptimized, repaired, normals, realignment_np);
-    const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired).counts);
+    const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired, prescribed, normals).counts);
     const Compared_defects alone(frame_check(mesh, reoptimized).counts);
     Singularity_graph graph = compute_singularity_graph(mesh, reoptimized, repaired);
     r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&

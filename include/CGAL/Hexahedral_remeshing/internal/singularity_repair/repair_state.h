@@ -10,6 +10,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_SINGULARITY_REPAIR_REPAIR_STATE_H
 
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/edge_holonomy.h>
+#include <CGAL/Hexahedral_remeshing/local_meshability.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 
 #include <Eigen/Dense>
@@ -62,6 +63,11 @@ public:
       m_lean[e] = lean(e, m_holonomy[e], m_class[e]);
     }
     m_mean_length = ne > 0 ? total / double(ne) : 1.0;
+    // every change keeps them (evaluate()): the hexahedra at a boundary vertex are counted from them
+    if(m_directions != nullptr) {
+      m_achieved.assign(ne, -1);
+      for(Index e : mesh.boundary_edges()) m_achieved[e] = boundary_valence(e);
+    }
   }
 
   const Mesh& mesh() const { return m_mesh; }
@@ -107,12 +113,21 @@ public:
     }
   }
 
+  // A boundary vertex whose hexahedra cannot be counted (is_meshable_boundary_corner(): a curve ending
+  // at a box corner, four concave edges of valence 3 with no curve ending there); known only with the
+  // directions, which give the boundary valences.
+  bool is_invalid_boundary_corner(Index v) const
+  {
+    return m_directions != nullptr && m_mesh.is_boundary_vertex(v) && !is_meshable_boundary_corner(m_mesh, m_class, m_achieved, v);
+  }
+
   // A vertex where the curve turns from one lean to the other costs as a zipper: the map reports it
-  // as one (see edge_lean()).
+  // as one (see edge_lean()); an invalid boundary corner as an invalid node.
   double vertex_cost(Index v) const
   {
     const double c = vertex_cost(vertex_singularity(m_mesh, m_class, v));
-    return c == 0 && is_leaning_zipper(m_mesh, m_class, m_lean, v) ? 10 : c;
+    if(c != 0) return c;
+    return is_leaning_zipper(m_mesh, m_class, m_lean, v) || is_invalid_boundary_corner(v) ? 10 : 0;
   }
 
   // The change of the cost if face f had matching g (infinite if a boundary edge's valence changes).
@@ -213,6 +228,7 @@ private:
   std::vector<int> m_holonomy;
   std::vector<signed char> m_class;
   std::vector<signed char> m_lean; // edge_lean() per interior edge
+  std::vector<int> m_achieved;      // per boundary edge, its valence (with the directions only)
   double m_mean_length = 1;
 };
 
