@@ -11,6 +11,9 @@
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
 #include <CGAL/Hexahedral_remeshing/local_meshability.h>
 #include <CGAL/Hexahedral_remeshing/repair_singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/singular_vertex_relocation.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <gtest/gtest.h>
 
@@ -512,3 +515,62 @@ TEST(Meshability, BoundaryCornersCountTheirHexahedra)
               hexahedra, invalid.size());
 }
 
+// The relocation of the singular curves' vertices (the map's singular_vertex_relocation): the straight
+// valence-3 axis of kuhn_box with its three interior vertices pushed sideways (0.45 and 0.4 of a cell,
+// alternately: its edges 11 to 24 degrees off z), the field turning about z around it. The relocation
+// puts them back on the axis line between its two boundary ends (every singular edge within a degree of
+// z, measured here from the positions), within the inversion barrier (every tetrahedron positively
+// oriented, decided with exact constructions), and moves no boundary vertex nor any vertex off the curve.
+TEST(Relocation, JaggedAxisBackOnItsLine)
+{
+  Mesh m = kuhn_box();
+  const auto straight = points_of(m);
+  const double push[3][2] = {{0.45, 0}, {-0.4, 0.2}, {0.45, -0.2}};
+  for(Index v = 0; v < m.number_of_vertices(); ++v)
+    if(on_axis(straight[v]) && !m.is_boundary_vertex(v)) {
+      const int k = int(straight[v].z() / 2) - 1;
+      m.move_interior_vertex(v, Point(push[k][0], push[k][1], straight[v].z()));
+    }
+  EXPECT_THROW(m.move_interior_vertex(0, Point(0, 0, 0)), std::invalid_argument); // a corner of the box
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  auto all_positive = [](const Mesh& mesh) {
+    for(Index t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+      std::array<EK::Point_3, 4> p;
+      for(int i = 0; i < 4; ++i) {
+        const Point& q = mesh.point(mesh.tetrahedron_vertices(t)[i]);
+        p[i] = EK::Point_3(q.x(), q.y(), q.z());
+      }
+      if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) return false;
+    }
+    return true;
+  };
+  ASSERT_TRUE(all_positive(m));
+  const auto frames = axis_field(m);
+  const HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const HR::Singularity_graph g = HR::compute_singularity_graph(m, frames, matchings);
+  const auto jagged = points_of(m);
+  const auto verdict = independent::evaluate_frames(jagged, tets_of(m), frames);
+  ASSERT_EQ(verdict.singular.size(), 4u);
+  auto largest_angle = [&](const std::vector<Eigen::Vector3d>& p) {
+    double angle = 0;
+    for(const auto& e : verdict.singular) {
+      const Eigen::Vector3d d = (p[e.vertices[1]] - p[e.vertices[0]]).normalized();
+      angle = (std::max)(angle, std::acos((std::min)(1.0, std::abs(d.z()))) * 180 / M_PI);
+    }
+    return angle;
+  };
+  EXPECT_GT(largest_angle(jagged), 10);
+
+  Mesh moved = m;
+  const auto r = HR::internal::relocate_singular_vertices(moved, frames, g);
+  const auto after = points_of(moved);
+  EXPECT_EQ(r.moved_vertices, 3u);
+  EXPECT_LT(largest_angle(after), 1.0);
+  EXPECT_TRUE(all_positive(moved));
+  std::set<std::size_t> curve;
+  for(const auto& e : verdict.singular) curve.insert(e.vertices.begin(), e.vertices.end());
+  for(Index v = 0; v < m.number_of_vertices(); ++v)
+    if(!curve.count(v) || m.is_boundary_vertex(v)) EXPECT_TRUE(after[v] == jagged[v]) << v;
+  std::printf("jagged axis: largest angle to z %.1f -> %.2f degrees, %zu vertices moved\n", largest_angle(jagged),
+              largest_angle(after), r.moved_vertices);
+}

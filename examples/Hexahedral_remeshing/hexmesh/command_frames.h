@@ -71,6 +71,8 @@ struct Frame_field_options
   // the map's quantization (parametrize, remesh): --greedy-rounding asks for the rounding alone
   CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization =
     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::AUTOMATIC;
+  // the map on a mesh whose singular curves' vertices moved towards their axes (parametrize, remesh)
+  bool relocation = false;
   // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
   double acute_edge_band = -1;
 };
@@ -85,6 +87,7 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   // the repair runs by default, except on the baseline (the paper's comparison field, kept as it is)
   o.repair = o.baseline ? args.has("repair") : !args.has("no-repair");
   if(args.has("greedy-rounding")) o.quantization = CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::GREEDY_ROUNDING;
+  o.relocation = args.has("relocate-singular-vertices");
   o.quiet = args.has("quiet");
   if(args.has("acute-edge-band")) {
     o.acute_edge_band = args.number("acute-edge-band", 0.);

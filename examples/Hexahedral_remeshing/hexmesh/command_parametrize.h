@@ -34,7 +34,7 @@ inline std::vector<std::string> parametrize_options()
   return options;
 }
 
-inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 // The --target-edge-length option: a positive number of model units, 0 when absent (default size).
 inline double target_edge_length_option(const Arguments& args)
@@ -57,7 +57,7 @@ struct Map_progress_visitor : CGAL::Hexahedral_remeshing::Integer_grid_map_visit
 inline CGAL::Hexahedral_remeshing::Integer_grid_map_result
 run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& f,
                      double target_edge_length, CGAL::Hexahedral_remeshing::Integer_grid_map& map, Progress& progress,
-                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization)
+                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization, bool relocation)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
@@ -65,9 +65,9 @@ run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahe
   try {
     if(target_edge_length > 0)
       return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                          HP::quantization(quantization, HP::target_edge_length(target_edge_length)).visitor(std::ref(visitor)));
+                                          HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::target_edge_length(target_edge_length))).visitor(std::ref(visitor)));
     return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                        HP::quantization(quantization).visitor(std::ref(visitor)));
+                                        HP::quantization(quantization, HP::singular_vertex_relocation(relocation)).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {
@@ -126,7 +126,19 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("inverted_before_untangling", m.relaxed_inverted_tetrahedra)
       .value("untangling_ran", m.seamless_untangling_ran)
       .array("folded_tetrahedra", std::vector<std::uint32_t>(m.seamless_folds.begin(), m.seamless_folds.begin() + std::ptrdiff_t(shown)))
+      .begin("folds_by_cause")
+      .value("structural_at_boundary", m.seamless_fold_causes.structural_at_boundary)
+      .value("structural_inside", m.seamless_fold_causes.structural_inside)
+      .value("at_field_defects", m.seamless_fold_causes.at_field_defects)
+      .value("at_boundary", m.seamless_fold_causes.at_boundary)
+      .value("inside", m.seamless_fold_causes.inside)
+      .end()
       .value("seconds", m.seamless_seconds)
+      .end();
+  json.begin("relocation")
+      .value("moved_vertices", m.relocated_vertices)
+      .value("jogs_before", m.relocation_jogs_before)
+      .value("jogs_after", m.relocation_jogs_after)
       .end();
   json.begin("quantization")
       .value("path", quantization_name(m.quantization))
@@ -156,6 +168,14 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
   json.end();
 }
 
+// The causes of the seamless map's folds, as one phrase.
+inline std::string seamless_fold_cause_list(const CGAL::Hexahedral_remeshing::Seamless_fold_causes& c)
+{
+  return "folds: " + std::to_string(c.structural_at_boundary) + " flat for every map at the boundary, " +
+         std::to_string(c.structural_inside) + " inside, " + std::to_string(c.at_field_defects) + " at field defects, " +
+         std::to_string(c.at_boundary) + " at the boundary, " + std::to_string(c.inside) + " inside";
+}
+
 inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
                                    const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c,
                                    const CGAL::Hexahedral_remeshing::Boundary_valence_agreement& a)
@@ -168,8 +188,12 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
       << (m.seamless_injective ? std::string("injective")
                                : "NOT injective: " + std::to_string(m.seamless_inverted_tetrahedra) + " inverted and " +
                                    std::to_string(m.seamless_degenerate_tetrahedra) + " flat tetrahedra (" +
-                                   std::to_string(m.structurally_flat_tetrahedra) + " flat for every map)")
+                                   std::to_string(m.structurally_flat_tetrahedra) + " flat for every map); " +
+                                   seamless_fold_cause_list(m.seamless_fold_causes))
       << " before rounding"
+      << (m.relocated_vertices ? "; " + std::to_string(m.relocated_vertices) + " curve vertices moved towards their axes (jogs " +
+                                   std::to_string(m.relocation_jogs_before) + " -> " + std::to_string(m.relocation_jogs_after) + ")"
+                               : std::string())
       << (m.seamless_untangling_ran ? " (untangled: " + std::to_string(m.relaxed_inverted_tetrahedra) + " folded in the minimizer)" : std::string())
       << "\n"
       << "  quantization        "
@@ -211,7 +235,7 @@ inline int command_parametrize(const Arguments& args)
   const double hex_edge = HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
   const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, 2 * hex_edge, hex_edge);
   HR::Integer_grid_map map;
-  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization);
+  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization, options.relocation);
   progress.start("checking the map");
   const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
   const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, f.valences, check);

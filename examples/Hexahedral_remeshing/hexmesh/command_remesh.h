@@ -33,7 +33,7 @@ inline std::vector<std::string> remesh_options()
   return options;
 }
 
-inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 inline int command_remesh(const Arguments& args)
 {
@@ -71,7 +71,7 @@ inline int command_remesh(const Arguments& args)
       HP::valence_heuristic(options.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
         HP::baseline(options.baseline, HP::realignment(options.realign, HP::singularity_repair(options.repair,
         HP::hexahedral_smoothing(!args.has("no-smoothing"), HP::acute_edge_band_radius(options.acute_edge_band,
-        HP::quantization(options.quantization, HP::integer_grid_map_output(std::ref(map), size))))))))).visitor(std::ref(visitor)));
+        HP::quantization(options.quantization, HP::singular_vertex_relocation(options.relocation, HP::integer_grid_map_output(std::ref(map), size)))))))))).visitor(std::ref(visitor)));
   };
   try {
     if(target > 0) r = run(HP::target_edge_length(target));

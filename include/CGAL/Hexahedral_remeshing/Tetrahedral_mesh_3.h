@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -96,6 +97,17 @@ public:
   bool is_boundary_vertex(Index v) const { return m_vertex_on_boundary[v] != 0; }
   /// Edges incident to `v`, sorted by the index of their other endpoint.
   Index_range<Index> vertex_edges(Index v) const { return range(m_vertex_edge_offsets, m_vertex_edges, v); }
+  /// Moves the interior vertex `v` to `p`: the boundary, the connectivity and every index stay as they
+  /// are. The caller keeps every tetrahedron of `v` positively oriented (the operations that move
+  /// vertices decide it with exact orientations).
+  /// \throws std::invalid_argument if `v` is out of range or a boundary vertex.
+  void move_interior_vertex(Index v, const Point_3& p)
+  {
+    if(v >= m_points.size() || is_boundary_vertex(v))
+      throw std::invalid_argument("Tetrahedral_mesh_3::move_interior_vertex: vertex " + std::to_string(v) +
+                                  " is not an interior vertex");
+    m_points[v] = p;
+  }
   /// @}
 
   /// \name Tetrahedra

@@ -38,6 +38,7 @@ enum quantization_t { quantization };
 enum quantization_time_limit_t { quantization_time_limit };
 enum seamless_map_parameters_t { seamless_map_parameters };
 enum jog_refinement_t { jog_refinement };
+enum singular_vertex_relocation_t { singular_vertex_relocation };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -72,6 +73,9 @@ template <class T> unspecified_type quantization_time_limit(const T& value);
 template <class T> unspecified_type seamless_map_parameters(const T& value);
 /// Integer-grid map: split the edges that close singular jogs before the map (`bool`, default `false`).
 template <class T> unspecified_type jog_refinement(const T& value);
+/// Integer-grid map: move the interior vertices of the singular curves towards their holonomy axes
+/// before the map (`bool`, default `false`).
+template <class T> unspecified_type singular_vertex_relocation(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_stiffening_iterations)
@@ -80,8 +84,30 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization_time_limit)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(seamless_map_parameters)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(jog_refinement)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(singular_vertex_relocation)
 #endif
 } // namespace parameters
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// The folded (inverted or flat) tetrahedra of the seamless map by what they say of the stage that must
+/// change, each in the first class that fits (`Integer_grid_map_result::seamless_fold_causes`).
+struct Seamless_fold_causes
+{
+  /// Flat in every map that respects the constraints (`structurally_flat_tetrahedra`), with a boundary
+  /// face: the constraints put its corners on one line or plane (two feature curves of one parameter
+  /// line, a boundary sheet that meets itself); another field or another mesh is needed.
+  std::size_t structural_at_boundary = 0;
+  /// Flat in every map, inside: three corners on one singular line (a curve jogging inside a face).
+  std::size_t structural_inside = 0;
+  /// A corner at a defect of the field's graph: an end of a jog or improper edge, a dangling end, a zipper.
+  std::size_t at_field_defects = 0;
+  /// Other tetrahedra with a corner on the boundary.
+  std::size_t at_boundary = 0;
+  /// The others.
+  std::size_t inside = 0;
+  /// Their sum: the size of `Integer_grid_map_result::seamless_folds`.
+  std::size_t total() const { return structural_at_boundary + structural_inside + at_field_defects + at_boundary + inside; }
+};
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Outcome of `compute_integer_grid_map()`, the most serious first.
@@ -142,6 +168,15 @@ struct Integer_grid_map_result
   /// mesh (`Integer_grid_map::points`, `tetrahedra`) is the input mesh with these splits; its first
   /// vertices are the input's.
   std::size_t split_jog_edges = 0;
+  /// Interior vertices of singular curves moved towards their curves' holonomy axes before the map
+  /// (named parameter `singular_vertex_relocation`; the map's mesh has them at their new positions,
+  /// the boundary is unchanged), and the jogs (singular edges more than 45 degrees off their axis)
+  /// of the map's mesh before and after the moves.
+  std::size_t relocated_vertices = 0;
+  /// Jogs before the relocation.
+  std::size_t relocation_jogs_before = 0;
+  /// Jogs after the relocation.
+  std::size_t relocation_jogs_after = 0;
   /// Tetrahedra of the map's mesh (the input's, more if jog edges were split).
   std::size_t map_tetrahedra = 0;
   /// Interior faces of the cut (faces with an unknown integer jump).
@@ -169,6 +204,8 @@ struct Integer_grid_map_result
   /// Where the seamless map is not injective: its inverted and flat tetrahedra (indices in the map's
   /// mesh, `Integer_grid_map::tetrahedra`).
   std::vector<std::uint32_t> seamless_folds;
+  /// The tetrahedra of `seamless_folds` by cause.
+  Seamless_fold_causes seamless_fold_causes;
   /// True if the foldover-free untangling of the seamless map ran (its minimizer folded).
   bool seamless_untangling_ran = false;
   /// Tetrahedra with `det J <= 0` (floating point) after the quantization, before the repair.
@@ -292,6 +329,7 @@ struct Map_options
   double quantization_time_limit = 60;
   std::vector<std::array<Eigen::Vector3d, 4> >* seamless_parameters = nullptr;
   bool jog_refinement = false;
+  bool relocation = false;
 };
 
 template <class Traits, class NamedParameters>
@@ -310,6 +348,7 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
   o.maximum_stiffening = choose_parameter(get_parameter(np, internal_np::maximum_stiffening_iterations), 20);
   o.untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
   o.jog_refinement = choose_parameter(get_parameter(np, internal_np::jog_refinement), false);
+  o.relocation = choose_parameter(get_parameter(np, internal_np::singular_vertex_relocation), false);
   o.quantization = choose_parameter(get_parameter(np, internal_np::quantization), Integer_grid_map_quantization::AUTOMATIC);
   o.quantization_time_limit = choose_parameter(get_parameter(np, internal_np::quantization_time_limit), 60.0);
   if(!(o.quantization_time_limit >= 0) || !std::isfinite(o.quantization_time_limit))
@@ -383,6 +422,11 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{singular_vertex_relocation}
+///     \cgalParamDescription{move every interior vertex of a singular curve (two singular edges of valence 3 or 5, no other) towards the position that aligns its two edges with their holonomy axes, within an inversion barrier (exact orientations; no tetrahedron around it worse than half its worst start shape), in Gauss-Seidel sweeps; the map is computed on the moved mesh. Nodes, boundary vertices and the boundary stay}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{seamless_map_parameters}
 ///     \cgalParamDescription{receives the corner parameters (in hex edges) of the seamless map before any rounding, after its untangling: one array of four points per tetrahedron, in the order of its vertices}
 ///     \cgalParamType{`std::vector<std::array<Eigen::Vector3d, 4> >*`}
@@ -418,9 +462,9 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
   internal::Refined_field<Traits> refined;
   if(o.jog_refinement && internal::refine_jogs(mesh, frames, matchings, singularities, refined)) {
     r.split_jog_edges = refined.mesh.number_of_vertices() - mesh.number_of_vertices();
-    internal::compute_map_stages(refined.mesh, refined.frames, refined.matchings, refined.singularities, o, visitor, map, r);
+    internal::relocate_and_compute_map_stages(refined.mesh, refined.frames, refined.matchings, refined.singularities, o, visitor, map, r);
   } else {
-    internal::compute_map_stages(mesh, frames, matchings, singularities, o, visitor, map, r);
+    internal::relocate_and_compute_map_stages(mesh, frames, matchings, singularities, o, visitor, map, r);
   }
   r.map_tetrahedra = map.tetrahedra.size();
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -68,6 +68,17 @@ double bounding_box_diagonal(const Tetrahedral_mesh_3<Traits>& mesh)
 
 // The first stage of a failed run whose output is already broken, and why (design notes §5): the
 // field's local check, then the continuous map, the rounded map, the extraction, the smoothing.
+// Where the seamless map folds (empty if it does not): what tells the field's defects from the constraints.
+inline std::string seamless_fold_phrase(const Integer_grid_map_result& m)
+{
+  if(m.seamless_folds.empty()) return std::string();
+  const Seamless_fold_causes& c = m.seamless_fold_causes;
+  return "; the seamless map folds " + std::to_string(c.total()) + " tetrahedra: " + std::to_string(c.at_field_defects) +
+         " at the field's defects, " + std::to_string(c.structural_at_boundary + c.structural_inside) +
+         " flat in every map (" + std::to_string(c.structural_at_boundary) + " at the boundary), " +
+         std::to_string(c.at_boundary + c.inside) + " others (" + std::to_string(c.at_boundary) + " at the boundary)";
+}
+
 inline void name_failed_stage(Hexahedral_remeshing_result& r)
 {
   const Local_meshability_report& m = r.frame_field.meshability;
@@ -77,13 +88,13 @@ inline void name_failed_stage(Hexahedral_remeshing_result& r)
       if(m.counts[k] > 0 && Meshability_reason(k) != Meshability_reason::DISAGREEING_FACE && Meshability_reason(k) != Meshability_reason::FEATURE_SECTOR)
         reasons += (reasons.empty() ? "" : ", ") + std::string(meshability_reason_name(Meshability_reason(k))) + " " + std::to_string(m.counts[k]);
     r.failed_stage = "frame_field";
-    r.failure_reason = "the singularity graph is not locally meshable after the repair (" + reasons + ")";
+    r.failure_reason = "the singularity graph is not locally meshable after the repair (" + reasons + ")" + seamless_fold_phrase(r.map);
   } else if(!r.map.seamless_injective && r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
     r.failed_stage = "seamless_map";
     r.failure_reason = "the seamless map is not injective before rounding (" + std::to_string(r.map.seamless_inverted_tetrahedra) +
                        " inverted and " + std::to_string(r.map.seamless_degenerate_tetrahedra) + " flat tetrahedra after its untangling); " +
                        std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
-                       " flat in the final map";
+                       " flat in the final map" + seamless_fold_phrase(r.map);
   } else if(r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
     r.failed_stage = "rounding";
     r.failure_reason = "the rounded map folds " + std::to_string(r.map.rounded_inverted_tetrahedra) + " tetrahedra; " +

@@ -19,7 +19,9 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/reduced_system.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_fold_causes.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separation_constraints.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/singular_vertex_relocation.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
 #include <CGAL/Hexahedral_remeshing/internal/octahedral_group.h>
@@ -78,6 +80,8 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   const Seamless_map seamless =
     compute_seamless_map(mesh, geometry, frames, s, P, x0, reduced.integer_column, flat, H, rhs, solver, o.untangle, o.untangling_rings);
   report_seamless_map(seamless, r);
+  r.seamless_fold_causes = classify_seamless_folds<Traits, decltype(r.seamless_fold_causes)>(
+    mesh, r.seamless_folds, flat, field_defect_vertices(mesh, singularities, jog_edges));
   if(o.seamless_parameters) corner_parameters(P * seamless.y + x0, *o.seamless_parameters);
   r.seamless_seconds = stage.end();
 
@@ -106,6 +110,25 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
                [&](std::uint32_t f, int k) { return int(std::lround(jump_form(f, k)(y))); }, map, r);
   r.sanitize_seconds = stage.end();
   set_map_status(q.success, r);
+}
+
+// The map stages on `mesh`, or, with the relocation asked, on a copy of it whose singular curves'
+// interior vertices have moved towards their axes (singular_vertex_relocation.h).
+template <class Traits, class Options, class Visitor, class Result>
+void relocate_and_compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                                     const Matchings& matchings, const Singularity_graph& singularities, const Options& o,
+                                     Visitor& visitor, Integer_grid_map& map, Result& r)
+{
+  if(!o.relocation) {
+    compute_map_stages(mesh, frames, matchings, singularities, o, visitor, map, r);
+    return;
+  }
+  Tetrahedral_mesh_3<Traits> moved = mesh;
+  const Singular_vertex_relocation relocation = relocate_singular_vertices(moved, frames, singularities);
+  r.relocated_vertices = relocation.moved_vertices;
+  r.relocation_jogs_before = relocation.jogs_before;
+  r.relocation_jogs_after = relocation.jogs_after;
+  compute_map_stages(moved, frames, matchings, singularities, o, visitor, map, r);
 }
 
 } // namespace internal
