@@ -108,7 +108,7 @@ inline int command_remesh(const Arguments& args)
     const HR::Frame_field_pipeline_result& f = r.frame_field;
     Json json;
     json.begin().value("input", in).value("output", write_hexes ? out : std::string()).value("status", HR::status_name(r.status))
-        .value("message", r.message).value("failed_stage", r.failed_stage).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra)
+        .value("message", r.message).value("failed_stage", r.failed_stage).value("failure_reason", r.failure_reason).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra)
         .value("repair_fallback", r.repair_fallback).value("repaired_field_outcome", r.repaired_field_outcome);
     json.begin("frame_field")
         .value("energy", f.frame_field.energy)

@@ -72,8 +72,10 @@ struct Singularity_repair_result
   std::size_t simplified_clusters = 0;
   /// Why the others stay, (reason, count): `"too_large"` (region over the size limit),
   /// `"collar_not_flat"` (another curve crosses the region's collar, or the holonomies do not cancel),
-  /// `"not_editable"`, `"boundary_valence"` (an achieved boundary valence would change), `"not_cheaper"`.
-  std::vector<std::pair<std::string, std::size_t> > hex_scale_kept;
+  /// `"not_editable"`, `"boundary_valence"` (an achieved boundary valence would change), `"not_cheaper"`;
+  /// every reason is listed, with 0 where the repair did not run.
+  std::vector<std::pair<std::string, std::size_t> > hex_scale_kept = {
+    {"too_large", 0}, {"collar_not_flat", 0}, {"not_editable", 0}, {"boundary_valence", 0}, {"not_cheaper", 0}};
   /// In the pipeline (`compute_frame_field_pipeline()`), which repairs the realigned field and
   /// re-optimizes its frames: true if the repaired field was kept (no worse with the kept matchings and
   /// from the frames alone, better in one), false if the field was left as the realignment made it.
