@@ -392,9 +392,9 @@ TEST(Extraction, FoldedMapsDoNotCrashAndEmitOnlyCompleteCells)
     ASSERT_GT(check.inverted_tetrahedra, 0u);
     HR::Hexahedral_mesh_3 hexes;
     const HR::Hexahedral_extraction_result r = HR::extract_hexahedra(map, hexes);
-    std::printf("folded grid k=%d: %zu inverted tets, %zu/%zu hexes, %zu incomplete, %zu folded, %zu duplicate, "
+    std::printf("folded grid k=%d: %zu inverted tets, %zu/%zu hexes, %zu incomplete, %zu resolved, %zu folded, %zu duplicate, "
                 "%zu untraced corners, %zu spurious vertices removed\n", k, r.inverted_tetrahedra, r.hexahedra,
-                g.mesh.hexahedra.size() * k * k * k, r.incomplete_cells, r.folded_cells, r.duplicate_cells,
+                g.mesh.hexahedra.size() * k * k * k, r.incomplete_cells, r.resolved_cells, r.folded_cells, r.duplicate_cells,
                 r.untraced_corners, r.removed_vertices);
     EXPECT_EQ(r.status, HR::Hexahedral_extraction_result::DEFECTS);
     EXPECT_EQ(r.inverted_tetrahedra, check.inverted_tetrahedra);
@@ -413,6 +413,76 @@ TEST(Extraction, FoldedMapsDoNotCrashAndEmitOnlyCompleteCells)
     EXPECT_GT(r.folded_cells + r.incomplete_cells, 0u);
     EXPECT_GT(hexes.hexahedra.size(), g.mesh.hexahedra.size() * k * k * k / 2); // the defects stay local
   }
+}
+
+// resolve_conflicting_cells(): a cell whose corner was seen as two hex vertices takes the one its
+// complete neighbours use; it stays out when both or neither are used, or when one of its quads has
+// two hexahedra already. Two unit cubes side by side (vertex x + 3 (y + 2 z) at (x, y, z)) and a
+// spurious copy 12 of vertex 1 = (1, 0, 0).
+TEST(Extraction, ConflictingCornersTakeTheVertexTheNeighboursUse)
+{
+  namespace ex = HR::internal::extraction;
+  std::vector<HR::Hexahedral_mesh_3::Point_3> positions;
+  for(int z = 0; z < 2; ++z)
+    for(int y = 0; y < 2; ++y)
+      for(int x = 0; x < 3; ++x) positions.emplace_back(x, y, z);
+  positions.emplace_back(1.1, 0.1, 0.1); // 12: the spurious copy
+  for(int i = 0; i < 4; ++i) positions.emplace_back(1.5, 0.25 * i, 2.0); // 13..16: above, unused
+  auto cube = [](std::uint32_t x0) { // corner bits x | y << 1 | z << 2
+    std::array<std::uint32_t, 8> c;
+    for(std::uint32_t b = 0; b < 8; ++b) c[b] = x0 + (b & 1) + 3 * (((b >> 1) & 1) + 2 * ((b >> 2) & 1));
+    return c;
+  };
+  auto cell_of = [](const std::array<std::uint32_t, 8>& c) {
+    ex::Cell_corners cell;
+    for(std::size_t b = 0; b < 8; ++b) cell.candidates[b] = {c[b]};
+    return cell;
+  };
+  struct Run { std::size_t hexes, resolved, left; std::array<std::uint32_t, 8> last; };
+  auto run = [&](std::vector<std::array<std::uint32_t, 8> > emitted, std::vector<ex::Cell_corners> conflicting) {
+    std::vector<std::array<std::uint32_t, 8> > hexes;
+    std::vector<std::uint32_t> sources;
+    ex::Cell_assembly_report report;
+    ex::Cell_emitter emitter(positions, false, hexes, sources, report);
+    for(const auto& c : emitted) EXPECT_TRUE(emitter.emit(c, false, 0));
+    const std::size_t left = ex::resolve_conflicting_cells(conflicting, emitter, report).size();
+    return Run{hexes.size(), report.resolved_cells, left, hexes.empty() ? std::array<std::uint32_t, 8>() : hexes.back()};
+  };
+  const auto A = cube(0), B = cube(1);
+  // the shared corner (bit 0 of B) seen as 1 and as its copy 12: B takes 1, used by A
+  ex::Cell_corners b = cell_of(B);
+  b.candidates[0] = {12, 1};
+  const Run taken = run({A}, {b});
+  EXPECT_EQ(taken.hexes, 2u);
+  EXPECT_EQ(taken.resolved, 1u);
+  EXPECT_EQ(taken.left, 0u);
+  EXPECT_EQ(taken.last[0], 1u); // VTK vertex 0 is corner bit 0
+  EXPECT_EQ(std::count(taken.last.begin(), taken.last.end(), 12u), 0);
+  // both candidates used (1 and 4 by A): ambiguous, left out
+  ex::Cell_corners both = cell_of(B);
+  both.candidates[0] = {1, 4};
+  const Run ambiguous = run({A}, {both});
+  EXPECT_EQ(ambiguous.hexes, 1u);
+  EXPECT_EQ(ambiguous.left, 1u);
+  // neither used (A not emitted): left out
+  const Run unused = run({}, {b});
+  EXPECT_EQ(unused.hexes, 0u);
+  EXPECT_EQ(unused.left, 1u);
+  // a cell on the face x = 1 that A and B share already (the quad 1, 4, 7, 10): left out
+  std::array<std::uint32_t, 8> third = {{1, 13, 4, 14, 7, 15, 10, 16}};
+  ex::Cell_corners c = cell_of(third);
+  c.candidates[0] = {12, 1};
+  const Run crowded = run({A, B, cube(0)}, {c});
+  EXPECT_EQ(crowded.hexes, 2u); // cube(0) again is a duplicate
+  EXPECT_EQ(crowded.left, 1u);
+  // a chain: B resolved first makes its vertex 2 used, which resolves the cell C whose corner is {2, 12}
+  const auto C = std::array<std::uint32_t, 8>{{2, 13, 5, 14, 8, 15, 11, 16}};
+  ex::Cell_corners chained = cell_of(C);
+  chained.candidates[0] = {12, 2};
+  const Run chain = run({A}, {chained, b});
+  EXPECT_EQ(chain.hexes, 3u);
+  EXPECT_EQ(chain.resolved, 2u);
+  EXPECT_EQ(chain.left, 0u);
 }
 
 TEST(Extraction, SanitizingAbsorbsSmallNoise)

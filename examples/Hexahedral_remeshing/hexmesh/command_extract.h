@@ -146,6 +146,7 @@ inline int command_extract(const Arguments& args)
         .value("sanitizing_failures", r.sanitizing_failures)
         .value("untraced_corners", r.untraced_corners)
         .value("incomplete_cells", r.incomplete_cells)
+        .value("resolved_cells", r.resolved_cells)
         .value("duplicate_cells", r.duplicate_cells)
         .value("max_sanitizing_move", r.max_sanitizing_move)
         .end();
@@ -169,7 +170,8 @@ inline int command_extract(const Arguments& args)
               << "  extraction          " << (r.status == HR::Hexahedral_extraction_result::OK ? "OK" : "with defects")
               << ": " << r.degenerate_tetrahedra << " degenerate and " << r.inverted_tetrahedra
               << " inverted tetrahedra in parameter space, " << r.inverted_positions << " inverted in space, "
-              << r.incomplete_cells << " incomplete cells left out\n";
+              << r.incomplete_cells << " incomplete cells left out, " << r.resolved_cells
+              << " completed with their neighbours' vertices\n";
     print_hexahedral_mesh_check(std::cout, check);
     std::cout << std::fixed << std::setprecision(3) << "  seconds             read " << read_seconds << ", extraction "
               << r.seconds << "\n" << std::defaultfloat

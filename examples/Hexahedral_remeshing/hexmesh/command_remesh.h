@@ -129,6 +129,7 @@ inline int command_remesh(const Arguments& args)
         .value("degenerate_tetrahedra", r.extraction.degenerate_tetrahedra)
         .value("inverted_tetrahedra", r.extraction.inverted_tetrahedra)
         .value("incomplete_cells", r.extraction.incomplete_cells)
+        .value("resolved_cells", r.extraction.resolved_cells)
         .end();
     json.begin("smoothing")
         .value("performed", r.smoothed)

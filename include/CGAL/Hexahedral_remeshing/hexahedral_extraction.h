@@ -265,6 +265,10 @@ struct Hexahedral_extraction_result
   std::size_t untraced_corners = 0;
   /// Cells left out because a corner was missing or ambiguous.
   std::size_t incomplete_cells = 0;
+  /// Cells whose corners were all found, some as two hex vertices (a fold covers the lattice point
+  /// more than once), completed with the vertex their complete neighbours use (not in
+  /// `incomplete_cells`).
+  std::size_t resolved_cells = 0;
   /// Cells next to inverted tetrahedra with a corner inverted in space (folds): left out, or kept
   /// with the named parameter `keep_folded_cells`.
   std::size_t folded_cells = 0;
@@ -306,7 +310,10 @@ struct Hexahedral_extraction_result
 /// simplex by the lowest-dimension rule with exact orientation tests (Epick on the sanitized doubles),
 /// each identified by its simplex and its coordinates in that simplex's owner chart; (4) cells: from
 /// each centre a walk through the tetrahedra covering the open unit cube, across the transitions,
-/// finds its 8 corners. Positions are barycentric interpolations of the tetrahedra's vertex positions.
+/// finds its 8 corners; a corner found as two hex vertices (a fold covers the lattice point more than
+/// once) takes, after all cells, the one that the complete cells use, if exactly one is used and no
+/// quad of the cell has two hexahedra already. Positions are barycentric interpolations of the
+/// tetrahedra's vertex positions.
 ///
 /// Zero-volume tetrahedra are tolerated; where the map is folded (inverted tetrahedra) the cells that
 /// cannot be completed are left out and counted, never emitted broken; complete cells with a corner
@@ -439,6 +446,7 @@ Hexahedral_extraction_result extract_hexahedra(const Integer_grid_map& map, Hexa
   result.folded_cells = cells.folded_cells;
   result.untraced_corners = cells.missing_corners;
   result.incomplete_cells = cells.incomplete_cells;
+  result.resolved_cells = cells.resolved_cells;
   result.duplicate_cells = cells.duplicate_cells;
   result.inconsistent_walks = cells.inconsistent_walks + cells.truncated_walks;
   result.cells_seconds = seconds();
