@@ -415,19 +415,19 @@ TEST(Extraction, FoldedMapsDoNotCrashAndEmitOnlyCompleteCells)
   }
 }
 
-// resolve_conflicting_cells(): a cell whose corner was seen as two hex vertices takes the one its
-// complete neighbours use; it stays out when both or neither are used, or when one of its quads has
-// two hexahedra already. Two unit cubes side by side (vertex x + 3 (y + 2 z) at (x, y, z)) and a
-// spurious copy 12 of vertex 1 = (1, 0, 0).
-TEST(Extraction, ConflictingCornersTakeTheVertexTheNeighboursUse)
+// resolve_conflicting_cells(): a cell whose corner was seen as two hex vertices takes the choice
+// that glues it to the most emitted hexahedra; it stays out when two choices glue it equally, when
+// none glues it, or when one of its quads has two hexahedra already. Two unit cubes side by side
+// (vertex x + 3 (y + 2 z) at (x, y, z)), a copy 12 of vertex 1 = (1, 0, 0), vertices 13..16 elsewhere.
+TEST(Extraction, ConflictingCornersTakeTheChoiceGluedToTheNeighbours)
 {
   namespace ex = HR::internal::extraction;
   std::vector<HR::Hexahedral_mesh_3::Point_3> positions;
   for(int z = 0; z < 2; ++z)
     for(int y = 0; y < 2; ++y)
       for(int x = 0; x < 3; ++x) positions.emplace_back(x, y, z);
-  positions.emplace_back(1.1, 0.1, 0.1); // 12: the spurious copy
-  for(int i = 0; i < 4; ++i) positions.emplace_back(1.5, 0.25 * i, 2.0); // 13..16: above, unused
+  positions.emplace_back(1.1, 0.1, 0.1); // 12: the copy
+  for(int i = 0; i < 4; ++i) positions.emplace_back(1.5, 0.25 * i, 2.0); // 13..16
   auto cube = [](std::uint32_t x0) { // corner bits x | y << 1 | z << 2
     std::array<std::uint32_t, 8> c;
     for(std::uint32_t b = 0; b < 8; ++b) c[b] = x0 + (b & 1) + 3 * (((b >> 1) & 1) + 2 * ((b >> 2) & 1));
@@ -458,13 +458,12 @@ TEST(Extraction, ConflictingCornersTakeTheVertexTheNeighboursUse)
   EXPECT_EQ(taken.left, 0u);
   EXPECT_EQ(taken.last[0], 1u); // VTK vertex 0 is corner bit 0
   EXPECT_EQ(std::count(taken.last.begin(), taken.last.end(), 12u), 0);
-  // both candidates used (1 and 4 by A): ambiguous, left out
-  ex::Cell_corners both = cell_of(B);
-  both.candidates[0] = {1, 4};
-  const Run ambiguous = run({A}, {both});
-  EXPECT_EQ(ambiguous.hexes, 1u);
-  EXPECT_EQ(ambiguous.left, 1u);
-  // neither used (A not emitted): left out
+  // a cell D glued to B's other choice (its face 12, 4, 7, 10): two choices glue B once each, left out
+  const std::array<std::uint32_t, 8> D = {{13, 12, 14, 4, 15, 7, 16, 10}};
+  const Run tie = run({A, D}, {b});
+  EXPECT_EQ(tie.hexes, 2u);
+  EXPECT_EQ(tie.left, 1u);
+  // no choice glued (A not emitted): left out
   const Run unused = run({}, {b});
   EXPECT_EQ(unused.hexes, 0u);
   EXPECT_EQ(unused.left, 1u);
@@ -475,7 +474,7 @@ TEST(Extraction, ConflictingCornersTakeTheVertexTheNeighboursUse)
   const Run crowded = run({A, B, cube(0)}, {c});
   EXPECT_EQ(crowded.hexes, 2u); // cube(0) again is a duplicate
   EXPECT_EQ(crowded.left, 1u);
-  // a chain: B resolved first makes its vertex 2 used, which resolves the cell C whose corner is {2, 12}
+  // a chain: B resolved first glues the cell C whose corner is {2, 12} through its face 2, 5, 8, 11
   const auto C = std::array<std::uint32_t, 8>{{2, 13, 5, 14, 8, 15, 11, 16}};
   ex::Cell_corners chained = cell_of(C);
   chained.candidates[0] = {12, 2};

@@ -172,12 +172,10 @@ public:
   // new; `check_faces`: only if none of its quads has two hexahedra already. Returns whether it did.
   bool emit(const std::array<std::uint32_t, 8>& corner, bool near_inverted, std::uint32_t source, bool check_faces = false)
   {
-    static const int vtk_corner[8] = {0, 1, 3, 2, 4, 5, 7, 6}; // VTK vertex i -> corner bits
     std::array<std::uint32_t, 8> sorted = corner;
     std::sort(sorted.begin(), sorted.end());
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
-    std::array<std::uint32_t, 8> hex;
-    for(int i = 0; i < 8; ++i) hex[i] = corner[std::size_t(vtk_corner[i])];
+    const std::array<std::uint32_t, 8> hex = vtk_order(corner);
     // Where the map folds, a lattice point is covered more than once and spurious copies of hex
     // vertices appear (HexEx cancels them with its anti-darts). A cell met by inverted tetrahedra is
     // kept only if every corner is positively oriented in space (exact), so no folded cell is emitted,
@@ -197,16 +195,25 @@ public:
     return true;
   }
 
-  // Hexahedra on each vertex (the spurious copies of a fold are on none).
-  std::vector<std::uint32_t> vertex_use() const
-  {
-    std::vector<std::uint32_t> use(m_positions.size(), 0);
-    for(const auto& h : m_hexes)
-      for(std::uint32_t v : h) ++use[v];
-    return use;
-  }
-
   std::size_t size() const { return m_hexes.size(); }
+
+  // Quads of the cell of corners `corner` that one emitted hexahedron has already (the cell would
+  // close them); -1 if its corners are not distinct or one of its quads has two hexahedra.
+  int glued_faces(const std::array<std::uint32_t, 8>& corner) const
+  {
+    std::array<std::uint32_t, 8> sorted = corner;
+    std::sort(sorted.begin(), sorted.end());
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return -1;
+    const std::array<std::uint32_t, 8> hex = vtk_order(corner);
+    int glued = 0;
+    for(int f = 0; f < 6; ++f) {
+      const auto it = m_quads.find(quad(hex, f));
+      if(it == m_quads.end()) continue;
+      if(it->second >= 2) return -1;
+      ++glued;
+    }
+    return glued;
+  }
 
   void index_quads()
   {
@@ -215,6 +222,13 @@ public:
 
 private:
   typedef std::array<std::uint32_t, 4> Quad;
+  static std::array<std::uint32_t, 8> vtk_order(const std::array<std::uint32_t, 8>& corner)
+  {
+    static const int vtk_corner[8] = {0, 1, 3, 2, 4, 5, 7, 6}; // VTK vertex i -> corner bits
+    std::array<std::uint32_t, 8> hex;
+    for(int i = 0; i < 8; ++i) hex[std::size_t(i)] = corner[std::size_t(vtk_corner[i])];
+    return hex;
+  }
   static Quad quad(const std::array<std::uint32_t, 8>& hex, int f)
   {
     static const int q[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
@@ -253,13 +267,45 @@ private:
   std::map<Quad, int> m_quads;
 };
 
-// Completes the cells whose corners were all found but some as two or more hex vertices: where the
-// map folds, a lattice point is covered more than once and its spurious copies are seen from the
-// cells that cross the fold. The true vertex is the one the cell's complete neighbours use, a
-// spurious copy belongs to no cell: each such corner takes the one candidate used by emitted
-// hexahedra (none or several: the cell stays out). A completed cell is emitted only if no quad of it
-// has two hexahedra already. Cells completed this way make their neighbours' vertices used in turn,
-// so the pass repeats while it completes cells. Returns the cells still left out.
+// The corners of a cell whose corners were seen as several hex vertices: of every choice of one
+// candidate per corner, the one whose cell closes the most quads that one emitted hexahedron has
+// already (glued to its neighbours), if it is the only one to close that many and closes at least
+// one. False if there is no such choice or more than `max_choices` choices.
+inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter, std::array<std::uint32_t, 8>& best)
+{
+  const std::size_t max_choices = 4096;
+  std::size_t choices = 1;
+  for(const auto& c : cell.candidates) {
+    choices *= c.size();
+    if(choices > max_choices) return false;
+  }
+  int best_glued = 0;
+  bool tie = false;
+  for(std::size_t k = 0; k < choices; ++k) {
+    std::array<std::uint32_t, 8> corner;
+    for(std::size_t b = 0, rest = k; b < 8; ++b) {
+      corner[b] = cell.candidates[b][rest % cell.candidates[b].size()];
+      rest /= cell.candidates[b].size();
+    }
+    const int glued = emitter.glued_faces(corner);
+    if(glued > best_glued) {
+      best_glued = glued;
+      best = corner;
+      tie = false;
+    } else if(glued == best_glued && glued > 0) {
+      tie = true;
+    }
+  }
+  return best_glued > 0 && !tie;
+}
+
+// Completes the cells whose corners were all found but some as two or more hex vertices. Where the
+// map folds, a lattice point is covered more than once (its spurious copies belong to no cell);
+// where it is flat, two distinct hex vertices share one parameter point (each with its own cells):
+// the cells across such places see both. The cell that fills the hole is the one glued to its
+// neighbours (choose_corners()); it is emitted only if no quad of it has two hexahedra already.
+// Completed cells glue their neighbours in turn, so the pass repeats while it completes cells.
+// Returns the cells still left out.
 inline std::vector<Cell_corners> resolve_conflicting_cells(std::vector<Cell_corners> cells, Cell_emitter& emitter,
                                                            Cell_assembly_report& report)
 {
@@ -267,19 +313,11 @@ inline std::vector<Cell_corners> resolve_conflicting_cells(std::vector<Cell_corn
   emitter.index_quads();
   for(bool progress = true; progress && !cells.empty();) {
     progress = false;
-    const std::vector<std::uint32_t> use = emitter.vertex_use();
     std::vector<Cell_corners> left;
     for(const Cell_corners& cell : cells) {
       std::array<std::uint32_t, 8> corner;
-      bool ok = true;
-      for(std::size_t b = 0; b < 8 && ok; ++b) {
-        std::size_t used = 0;
-        for(std::uint32_t v : cell.candidates[b])
-          if(use[v] > 0 || cell.candidates[b].size() == 1) { corner[b] = v; ++used; }
-        ok = used == 1;
-      }
       const std::size_t before = emitter.size();
-      if(ok && emitter.emit(corner, cell.near_inverted, cell.source, true)) {
+      if(choose_corners(cell, emitter, corner) && emitter.emit(corner, cell.near_inverted, cell.source, true)) {
         report.resolved_cells += emitter.size() - before;
         progress = true;
       } else {
