@@ -129,7 +129,7 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns the report of every stage, their seconds and one overall status: `OK` for a valid hex mesh
-///          (conforming, manifold boundary, every scaled Jacobian > 0), `INVALID_HEX_MESH` when a mesh
+///          (conforming, manifold boundary, every scaled Jacobian >= 1e-6), `INVALID_HEX_MESH` when a mesh
 ///          was produced but is not valid, `NO_HEXAHEDRA` when the map has no complete cell; `message`
 ///          says why in one line.
 /// \throws Hexahedral_remeshing::Input_error for a defective input (an invalid C3t3 or surface, an

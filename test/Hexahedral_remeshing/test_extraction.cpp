@@ -416,8 +416,9 @@ TEST(Extraction, FoldedMapsDoNotCrashAndEmitOnlyCompleteCells)
 }
 
 // resolve_conflicting_cells(): a cell whose corner was seen as two hex vertices takes the choice
-// that glues it to the most emitted hexahedra; it stays out when two choices glue it equally, when
-// none glues it, or when one of its quads has two hexahedra already. Two unit cubes side by side
+// that glues it to the most emitted hexahedra, the least distorted of those glued alike; it stays out
+// when two choices are alike in both, when none glues it, or when one of its quads has two hexahedra
+// already. Two unit cubes side by side
 // (vertex x + 3 (y + 2 z) at (x, y, z)), a copy 12 of vertex 1 = (1, 0, 0), vertices 13..16 elsewhere.
 TEST(Extraction, ConflictingCornersTakeTheChoiceGluedToTheNeighbours)
 {
@@ -428,6 +429,7 @@ TEST(Extraction, ConflictingCornersTakeTheChoiceGluedToTheNeighbours)
       for(int x = 0; x < 3; ++x) positions.emplace_back(x, y, z);
   positions.emplace_back(1.1, 0.1, 0.1); // 12: the copy
   for(int i = 0; i < 4; ++i) positions.emplace_back(1.5, 0.25 * i, 2.0); // 13..16
+  positions.emplace_back(1, 0, 0); // 17: a copy of vertex 1 at its place
   auto cube = [](std::uint32_t x0) { // corner bits x | y << 1 | z << 2
     std::array<std::uint32_t, 8> c;
     for(std::uint32_t b = 0; b < 8; ++b) c[b] = x0 + (b & 1) + 3 * (((b >> 1) & 1) + 2 * ((b >> 2) & 1));
@@ -458,9 +460,17 @@ TEST(Extraction, ConflictingCornersTakeTheChoiceGluedToTheNeighbours)
   EXPECT_EQ(taken.left, 0u);
   EXPECT_EQ(taken.last[0], 1u); // VTK vertex 0 is corner bit 0
   EXPECT_EQ(std::count(taken.last.begin(), taken.last.end(), 12u), 0);
-  // a cell D glued to B's other choice (its face 12, 4, 7, 10): two choices glue B once each, left out
+  // a cell D glued to B's other choice (its face 12, 4, 7, 10): two choices glue B once each; the
+  // copy 12 is off the corner, so B with 1 (a unit cube) is the less distorted and is taken
   const std::array<std::uint32_t, 8> D = {{13, 12, 14, 4, 15, 7, 16, 10}};
-  const Run tie = run({A, D}, {b});
+  const Run straighter = run({A, D}, {b});
+  EXPECT_EQ(straighter.hexes, 3u);
+  EXPECT_EQ(straighter.last[0], 1u);
+  // the same with a copy 17 at the corner itself: two choices alike in both, left out
+  const std::array<std::uint32_t, 8> D17 = {{13, 17, 14, 4, 15, 7, 16, 10}};
+  ex::Cell_corners b17 = cell_of(B);
+  b17.candidates[0] = {17, 1};
+  const Run tie = run({A, D17}, {b17});
   EXPECT_EQ(tie.hexes, 2u);
   EXPECT_EQ(tie.left, 1u);
   // no choice glued (A not emitted): left out

@@ -155,6 +155,24 @@ TEST(HexahedralRemeshing, CubeFromTetrahedraGivesNCubedHexahedra)
   }
 }
 
+// A mesh that the check finds valid but with a hexahedron whose scaled Jacobian is positive only by
+// rounding (n03c after the untangling: 4.6e-15) is not OK: a solver's element matrix is singular there.
+TEST(HexahedralRemeshing, FlatHexahedronIsNotOK)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.002);
+  HR::Hexahedral_mesh_3 hexes;
+  HR::Hexahedral_remeshing_result r = CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(0.5));
+  ASSERT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  ASSERT_TRUE(r.check.valid);
+  r.check.min_scaled_jacobian = 4.6e-15;
+  HR::internal::decide_remeshing_status(m, r);
+  EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::INVALID_HEX_MESH);
+  EXPECT_NE(r.message.find("flat"), std::string::npos) << r.message;
+  r.check.min_scaled_jacobian = 1e-3;
+  HR::internal::decide_remeshing_status(m, r);
+  EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+}
+
 TEST(HexahedralRemeshing, SurfaceMeshInLinearCellComplexOut)
 {
   CGAL::Surface_mesh<K::Point_3> surface;

@@ -10,6 +10,8 @@
 #include <CGAL/Hexahedral_remeshing/internal/extraction/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/extraction/transitions.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -197,6 +199,24 @@ public:
 
   std::size_t size() const { return m_hexes.size(); }
 
+  // The smallest scaled Jacobian of the cell's corners in space (-1 to 1; the cell of corners `corner`,
+  // bits x | y << 1 | z << 2).
+  double corner_quality(const std::array<std::uint32_t, 8>& corner) const
+  {
+    double worst = 1.;
+    for(std::uint32_t b = 0; b < 8; ++b) {
+      const auto& o = m_positions[corner[b]];
+      Eigen::Matrix3d J;
+      for(int a = 0; a < 3; ++a) {
+        const auto& n = m_positions[corner[b ^ (1u << a)]];
+        J.col(a) = Eigen::Vector3d(n.x() - o.x(), n.y() - o.y(), n.z() - o.z()) * ((b >> a) & 1 ? -1. : 1.);
+      }
+      const double scale = J.col(0).norm() * J.col(1).norm() * J.col(2).norm();
+      worst = std::min(worst, scale > 0 ? J.determinant() / scale : -1.);
+    }
+    return worst;
+  }
+
   // Quads of the cell of corners `corner` that one emitted hexahedron has already (the cell would
   // close them); -1 if its corners are not distinct or one of its quads has two hexahedra.
   int glued_faces(const std::array<std::uint32_t, 8>& corner) const
@@ -269,8 +289,9 @@ private:
 
 // The corners of a cell whose corners were seen as several hex vertices: of every choice of one
 // candidate per corner, the one whose cell closes the most quads that one emitted hexahedron has
-// already (glued to its neighbours), if it is the only one to close that many and closes at least
-// one. False if there is no such choice or more than `max_choices` choices.
+// already (glued to its neighbours) and closes at least one; between choices glued alike, the one
+// whose worst corner is the least distorted in space (Cell_emitter::corner_quality()). False if two
+// choices are equal in both, if no choice is glued, or if there are more than `max_choices` choices.
 inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter, std::array<std::uint32_t, 8>& best)
 {
   const std::size_t max_choices = 4096;
@@ -279,7 +300,7 @@ inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter
     choices *= c.size();
     if(choices > max_choices) return false;
   }
-  int best_glued = 0;
+  std::pair<int, double> best_score(0, 0.);
   bool tie = false;
   for(std::size_t k = 0; k < choices; ++k) {
     std::array<std::uint32_t, 8> corner;
@@ -288,15 +309,17 @@ inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter
       rest /= cell.candidates[b].size();
     }
     const int glued = emitter.glued_faces(corner);
-    if(glued > best_glued) {
-      best_glued = glued;
+    if(glued <= 0 || glued < best_score.first) continue;
+    const std::pair<int, double> score(glued, emitter.corner_quality(corner));
+    if(score > best_score) {
+      best_score = score;
       best = corner;
       tie = false;
-    } else if(glued == best_glued && glued > 0) {
+    } else if(score == best_score) {
       tie = true;
     }
   }
-  return best_glued > 0 && !tie;
+  return best_score.first > 0 && !tie;
 }
 
 // Completes the cells whose corners were all found but some as two or more hex vertices. Where the

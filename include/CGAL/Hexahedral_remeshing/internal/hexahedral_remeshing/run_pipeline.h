@@ -37,6 +37,10 @@ double tetrahedral_mesh_volume(const Tetrahedral_mesh_3<Traits>& mesh)
 // mesh of the shipped cylinder: 0.013).
 constexpr double maximum_relative_hausdorff_distance = 0.05;
 
+// Scaled Jacobian below which a hexahedron that the check finds positive is flat all the same: a
+// solver's element matrix is singular there (n03c after the untangling: 4.6e-15).
+constexpr double minimum_scaled_jacobian = 1e-6;
+
 // The hex edge length the pipeline uses on `mesh`: target_edge_length, else the one of
 // number_of_hexahedra hexahedra, else the map's default (about 2000 hexahedra).
 template <class Traits, class NamedParameters>
@@ -216,12 +220,18 @@ void decide_remeshing_status(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_
   // A slit along a seam (cells on both sides, no cell across) keeps the topology but puts boundary
   // quads deep inside the solid: the boundary is then far from the input's.
   const bool follows_boundary = !(r.relative_hausdorff_distance > maximum_relative_hausdorff_distance);
-  if(r.check.valid && missing == 0 && same_topology && follows_boundary) {
+  const bool not_flat = r.check.min_scaled_jacobian >= minimum_scaled_jacobian;
+  if(r.check.valid && missing == 0 && same_topology && follows_boundary && not_flat) {
     r.status = Hexahedral_remeshing_status::OK;
     return;
   }
   r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
-  if(r.check.valid && missing == 0 && same_topology) {
+  if(r.check.valid && missing == 0 && !not_flat) {
+    std::ostringstream os;
+    os << "a hexahedron is flat (min scaled Jacobian " << r.check.min_scaled_jacobian << ", below "
+       << minimum_scaled_jacobian << ") where the integer-grid map is " << status_name(r.map.status);
+    r.message = os.str();
+  } else if(r.check.valid && missing == 0 && same_topology) {
     std::ostringstream os;
     os << "the boundary of the hex mesh is " << r.relative_hausdorff_distance
        << " of the diagonal away from the solid's (at most " << maximum_relative_hausdorff_distance
