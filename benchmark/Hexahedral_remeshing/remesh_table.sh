@@ -4,7 +4,8 @@
 # ../shared/data (or the files given), with the outcome, the stage a failed run failed at, the defects of the
 # field's local meshability check before and after the repair and what became of the repair (with the clusters of
 # curves removed / found at the hex scale), hex count, scaled Jacobian, Hausdorff distance,
-# feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory.
+# feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory;
+# cells: those the extraction left out / completed from their neighbours (resolve_conflicting_cells).
 #   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE or FOLDER...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
@@ -12,7 +13,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/remesh_table"
 mkdir -p "$out"
 modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -eq 1 ] && modes+=(no_repair)
-printf '%-28s %-10s %8s %7s %-17s %-12s %9s %-13s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects repair minSJ meanSJ \
+printf '%-28s %-10s %8s %7s %-17s %-12s %9s %-13s %7s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects repair cells minSJ meanSJ \
   hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB
 for f in "${files[@]}"; do
   name=$(basename "$f"); name="${name%.*}"
@@ -45,8 +46,10 @@ repair = ('fallback' if r.get('repair_fallback') else 'kept' if rep.get('accepte
 hs = rep.get('hex_scale', {})
 if hs.get('clusters'): repair += ' %d/%d' % (hs.get('removed', 0), hs['clusters'])
 hd = f['relative_hausdorff_distance']  # null without a smoothed mesh
-print('%-28s %-10s %8d %7d %-17s %-12s %9s %-13s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f' % (
-    name, mode, r['tetrahedra'], h['hexahedra'], r['status'], r.get('failed_stage') or '-', defects, repair,
+ex = r['extraction']  # cells left out / completed from their neighbours
+cells = '%d/%d' % (ex.get('incomplete_cells', 0), ex.get('resolved_cells', 0))
+print('%-28s %-10s %8d %7d %-17s %-12s %9s %-13s %7s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f' % (
+    name, mode, r['tetrahedra'], h['hexahedra'], r['status'], r.get('failed_stage') or '-', defects, repair, cells,
     h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
     '-' if hd is None else '%.2e' % hd, f['coverage'],
     '%d/%d' % (f['hex_feature_edges_with_prescribed_valence'], f['hex_feature_edges']),
