@@ -290,9 +290,11 @@ private:
 // The corners of a cell whose corners were seen as several hex vertices: of every choice of one
 // candidate per corner, the one whose cell closes the most quads that one emitted hexahedron has
 // already (glued to its neighbours) and closes at least one; between choices glued alike, the one
-// whose worst corner is the least distorted in space (Cell_emitter::corner_quality()). False if two
-// choices are equal in both, if no choice is glued, or if there are more than `max_choices` choices.
-inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter, std::array<std::uint32_t, 8>& best)
+// whose worst corner is the least distorted in space (Cell_emitter::corner_quality()) if `by_quality`.
+// False if two choices are equal in both, if no choice is glued, or if there are more than
+// `max_choices` choices.
+inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter, std::array<std::uint32_t, 8>& best,
+                           bool by_quality = true)
 {
   const std::size_t max_choices = 4096;
   std::size_t choices = 1;
@@ -310,7 +312,7 @@ inline bool choose_corners(const Cell_corners& cell, const Cell_emitter& emitter
     }
     const int glued = emitter.glued_faces(corner);
     if(glued <= 0 || glued < best_score.first) continue;
-    const std::pair<int, double> score(glued, emitter.corner_quality(corner));
+    const std::pair<int, double> score(glued, by_quality ? emitter.corner_quality(corner) : 0.);
     if(score > best_score) {
       best_score = score;
       best = corner;
@@ -334,21 +336,24 @@ inline std::vector<Cell_corners> resolve_conflicting_cells(std::vector<Cell_corn
 {
   if(cells.empty()) return cells;
   emitter.index_quads();
-  for(bool progress = true; progress && !cells.empty();) {
-    progress = false;
-    std::vector<Cell_corners> left;
-    for(const Cell_corners& cell : cells) {
-      std::array<std::uint32_t, 8> corner;
-      const std::size_t before = emitter.size();
-      if(choose_corners(cell, emitter, corner) && emitter.emit(corner, cell.near_inverted, cell.source, true)) {
-        report.resolved_cells += emitter.size() - before;
-        progress = true;
-      } else {
-        left.push_back(cell);
+  // the cells glued best by one choice first, all of them: a tie decided by the shape before its
+  // neighbours are in can take the wrong copy (B1_tet: a non-manifold boundary)
+  for(bool by_quality : {false, true})
+    for(bool progress = true; progress && !cells.empty();) {
+      progress = false;
+      std::vector<Cell_corners> left;
+      for(const Cell_corners& cell : cells) {
+        std::array<std::uint32_t, 8> corner;
+        const std::size_t before = emitter.size();
+        if(choose_corners(cell, emitter, corner, by_quality) && emitter.emit(corner, cell.near_inverted, cell.source, true)) {
+          report.resolved_cells += emitter.size() - before;
+          progress = true;
+        } else {
+          left.push_back(cell);
+        }
       }
+      cells.swap(left);
     }
-    cells.swap(left);
-  }
   return cells;
 }
 
