@@ -246,7 +246,11 @@ void decide_remeshing_status(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_
   } else {
     r.message = std::to_string(r.check.inverted_hexahedra) + " inverted hexahedra (min scaled Jacobian " +
                 std::to_string(r.check.min_scaled_jacobian) + "), " + std::to_string(r.check.non_conforming_quads) +
-                " non-conforming quads, " + std::to_string(r.extraction.incomplete_cells) +
+                " non-conforming quads, " +
+                (r.check.manifold_boundary ? std::string()
+                                           : "a non-manifold boundary (" + std::to_string(r.check.non_manifold_boundary_edges) +
+                                               " edges, " + std::to_string(r.check.non_manifold_boundary_vertices) + " vertices), ") +
+                std::to_string(r.extraction.incomplete_cells) +
                 " cells left out by the extraction (hex volume " + std::to_string(r.volume_ratio) +
                 " of the solid's); integer-grid map status " + status_name(r.map.status);
   }
