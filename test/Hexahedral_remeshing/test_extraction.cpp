@@ -473,6 +473,12 @@ TEST(Extraction, ConflictingCornersTakeTheChoiceGluedToTheNeighbours)
   const Run tie = run({A, D17}, {b17});
   EXPECT_EQ(tie.hexes, 2u);
   EXPECT_EQ(tie.left, 1u);
+  // a cell on A's side of A's face x = 1 (its own face x = 1 is 1, 4, 7, 10: it would overlap A) is not glued
+  ex::Cell_corners inside = cell_of({{13, 1, 14, 4, 15, 7, 16, 10}});
+  inside.candidates[0] = {13, 12};
+  const Run overlap = run({A}, {inside});
+  EXPECT_EQ(overlap.hexes, 1u);
+  EXPECT_EQ(overlap.left, 1u);
   // no choice glued (A not emitted): left out
   const Run unused = run({}, {b});
   EXPECT_EQ(unused.hexes, 0u);

@@ -217,8 +217,9 @@ public:
     return worst;
   }
 
-  // Quads of the cell of corners `corner` that one emitted hexahedron has already (the cell would
-  // close them); -1 if its corners are not distinct or one of its quads has two hexahedra.
+  // Quads of the cell of corners `corner` that one emitted hexahedron has already, on its other side
+  // (the cell would close them); -1 if its corners are not distinct, if one of its quads has two
+  // hexahedra, or one hexahedron on the same side (the cell would overlap it).
   int glued_faces(const std::array<std::uint32_t, 8>& corner) const
   {
     std::array<std::uint32_t, 8> sorted = corner;
@@ -229,7 +230,7 @@ public:
     for(int f = 0; f < 6; ++f) {
       const auto it = m_quads.find(quad(hex, f));
       if(it == m_quads.end()) continue;
-      if(it->second >= 2) return -1;
+      if(it->second.first >= 2 || same_orientation(outward_quad(hex, f), it->second.second)) return -1;
       ++glued;
     }
     return glued;
@@ -249,22 +250,36 @@ private:
     for(int i = 0; i < 8; ++i) hex[std::size_t(i)] = corner[std::size_t(vtk_corner[i])];
     return hex;
   }
+  // face f of a hexahedron in VTK order, its vertices in the order seen from outside
+  static Quad outward_quad(const std::array<std::uint32_t, 8>& hex, int f)
+  {
+    static const int q[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    return Quad{{hex[q[f][0]], hex[q[f][1]], hex[q[f][2]], hex[q[f][3]]}};
+  }
   static Quad quad(const std::array<std::uint32_t, 8>& hex, int f)
   {
-    static const int q[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    Quad k = {{hex[q[f][0]], hex[q[f][1]], hex[q[f][2]], hex[q[f][3]]}};
+    Quad k = outward_quad(hex, f);
     std::sort(k.begin(), k.end());
     return k;
   }
+  // two cycles of the same four vertices, in the same rotational order
+  static bool same_orientation(const Quad& a, const Quad& b)
+  {
+    const std::size_t i = std::size_t(std::find(b.begin(), b.end(), a[0]) - b.begin());
+    return i < 4 && b[(i + 1) % 4] == a[1];
+  }
   void add_quads(const std::array<std::uint32_t, 8>& hex)
   {
-    for(int f = 0; f < 6; ++f) ++m_quads[quad(hex, f)];
+    for(int f = 0; f < 6; ++f) {
+      auto& q = m_quads[quad(hex, f)];
+      if(q.first++ == 0) q.second = outward_quad(hex, f);
+    }
   }
   bool faces_free(const std::array<std::uint32_t, 8>& hex) const
   {
     for(int f = 0; f < 6; ++f) {
       const auto it = m_quads.find(quad(hex, f));
-      if(it != m_quads.end() && it->second >= 2) return false;
+      if(it != m_quads.end() && it->second.first >= 2) return false;
     }
     return true;
   }
@@ -284,7 +299,7 @@ private:
   std::vector<std::uint32_t>& m_sources;
   Cell_assembly_report& m_report;
   std::set<std::array<std::uint32_t, 8> > m_seen;
-  std::map<Quad, int> m_quads;
+  std::map<Quad, std::pair<int, Quad> > m_quads; // hexahedra on the quad, the first one's outward cycle
 };
 
 // The corners of a cell whose corners were seen as several hex vertices: of every choice of one
