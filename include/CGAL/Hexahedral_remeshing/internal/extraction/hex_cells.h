@@ -160,8 +160,8 @@ private:
   std::vector<std::uint32_t> m_queue;
 };
 
-// The hexahedra found so far, with their vertex sets (duplicates) and the number of hexahedra on
-// each quad (a resolved cell must not put a third hexahedron on a face).
+// The hexahedra found so far, with their vertex sets (duplicates) and, once index_quads() is called,
+// the hexahedra on each quad (a resolved cell must not put a third hexahedron on a face).
 class Cell_emitter
 {
 public:
@@ -171,12 +171,11 @@ public:
   {}
 
   // Emits the cell of corners `corner` (bits x | y << 1 | z << 2) if its 8 vertices are distinct and
-  // new; `check_faces`: only if none of its quads has two hexahedra already. Returns whether it did.
-  bool emit(const std::array<std::uint32_t, 8>& corner, bool near_inverted, std::uint32_t source, bool check_faces = false)
+  // new. Returns false if they are not distinct.
+  bool emit(const std::array<std::uint32_t, 8>& corner, bool near_inverted, std::uint32_t source)
   {
-    std::array<std::uint32_t, 8> sorted = corner;
-    std::sort(sorted.begin(), sorted.end());
-    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+    std::array<std::uint32_t, 8> sorted;
+    if(!distinct(corner, sorted)) return false;
     const std::array<std::uint32_t, 8> hex = vtk_order(corner);
     // Where the map folds, a lattice point is covered more than once and spurious copies of hex
     // vertices appear (HexEx cancels them with its anti-darts). A cell met by inverted tetrahedra is
@@ -189,11 +188,10 @@ public:
       ++m_report.folded_cells;
       if(!m_keep_folded) return true;
     }
-    if(check_faces && !faces_free(hex)) return false;
     if(!m_seen.insert(sorted).second) { ++m_report.duplicate_cells; return true; }
     m_hexes.push_back(hex);
     m_sources.push_back(source);
-    if(!m_quads.empty() || check_faces) add_quads(hex);
+    if(m_indexed) add_quads(hex);
     return true;
   }
 
@@ -222,9 +220,8 @@ public:
   // hexahedra, or one hexahedron on the same side (the cell would overlap it).
   int glued_faces(const std::array<std::uint32_t, 8>& corner) const
   {
-    std::array<std::uint32_t, 8> sorted = corner;
-    std::sort(sorted.begin(), sorted.end());
-    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return -1;
+    std::array<std::uint32_t, 8> sorted;
+    if(!distinct(corner, sorted)) return -1;
     const std::array<std::uint32_t, 8> hex = vtk_order(corner);
     int glued = 0;
     for(int f = 0; f < 6; ++f) {
@@ -236,8 +233,11 @@ public:
     return glued;
   }
 
+  // From now on the quads of the emitted hexahedra are counted (glued_faces()).
   void index_quads()
   {
+    if(m_indexed) return;
+    m_indexed = true;
     for(const auto& h : m_hexes) add_quads(h);
   }
 
@@ -275,13 +275,11 @@ private:
       if(q.first++ == 0) q.second = outward_quad(hex, f);
     }
   }
-  bool faces_free(const std::array<std::uint32_t, 8>& hex) const
+  static bool distinct(const std::array<std::uint32_t, 8>& corner, std::array<std::uint32_t, 8>& sorted)
   {
-    for(int f = 0; f < 6; ++f) {
-      const auto it = m_quads.find(quad(hex, f));
-      if(it != m_quads.end() && it->second.first >= 2) return false;
-    }
-    return true;
+    sorted = corner;
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
   }
   bool folded_in_space(const std::array<std::uint32_t, 8>& hex) const
   {
@@ -299,6 +297,7 @@ private:
   std::vector<std::uint32_t>& m_sources;
   Cell_assembly_report& m_report;
   std::set<std::array<std::uint32_t, 8> > m_seen;
+  bool m_indexed = false;
   std::map<Quad, std::pair<int, Quad> > m_quads; // hexahedra on the quad, the first one's outward cycle
 };
 
@@ -360,7 +359,8 @@ inline std::vector<Cell_corners> resolve_conflicting_cells(std::vector<Cell_corn
       for(const Cell_corners& cell : cells) {
         std::array<std::uint32_t, 8> corner;
         const std::size_t before = emitter.size();
-        if(choose_corners(cell, emitter, corner, by_quality) && emitter.emit(corner, cell.near_inverted, cell.source, true)) {
+        // choose_corners() checked the quads of the choice: none has two hexahedra or one on its side
+        if(choose_corners(cell, emitter, corner, by_quality) && emitter.emit(corner, cell.near_inverted, cell.source)) {
           report.resolved_cells += emitter.size() - before;
           progress = true;
         } else {
