@@ -198,6 +198,29 @@ TEST(CheckHexahedralMesh, PrismAxisIsOneChainOfValenceN)
   EXPECT_TRUE(HR::check_hexahedral_mesh(T::make_polygon_prism(4, 2).mesh).irregular_interior_edges.empty());
 }
 
+TEST(CheckHexahedralMesh, FlatHexahedraAreNotValid)
+{
+  // a unit cube sheared flat: the top face at height h moved by one edge length along x; every corner
+  // has its third edge at an angle ~h off the bottom plane, so the scaled Jacobian is ~h > 0
+  for(double h : {1e-8, 1e-1}) {
+    auto g = T::make_grid(1, 1, 1);
+    for(auto& p : g.mesh.points)
+      if(p.z() > 0.5) p = HR::Hexahedral_mesh_3::Point_3(p.x() + 1., p.y(), h);
+    const auto c = HR::check_hexahedral_mesh(g.mesh);
+    const double expected = h / std::sqrt(1. + h * h);  // det of (1,0,0), (0,1,0), (1,0,h)/|.|
+    EXPECT_NEAR(c.min_scaled_jacobian, expected, 1e-3 * expected) << h;
+    EXPECT_TRUE(c.conforming);
+    EXPECT_TRUE(c.manifold_boundary);
+    EXPECT_EQ(c.inverted_hexahedra, 0u);
+    EXPECT_EQ(c.flat_hexahedra, h < 1e-6 ? 1u : 0u) << h;
+    EXPECT_EQ(c.valid, h > 1e-6) << h;
+    // a threshold of 0 accepts any positive corner
+    EXPECT_TRUE(HR::check_hexahedral_mesh(g.mesh, HR::parameters::flat_scaled_jacobian_threshold(0.)).valid) << h;
+  }
+  EXPECT_THROW(HR::check_hexahedral_mesh(T::make_grid(1, 1, 1).mesh, HR::parameters::flat_scaled_jacobian_threshold(1.)),
+               HR::Error);
+}
+
 TEST(CheckHexahedralMesh, InvertedHexahedra)
 {
   // geometrically inverted corner, combinatorially fine

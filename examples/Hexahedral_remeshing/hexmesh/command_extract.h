@@ -67,6 +67,7 @@ inline void add_hexahedral_mesh_check(Json& json, const CGAL::Hexahedral_remeshi
       .value("mean_scaled_jacobian", c.mean_scaled_jacobian)
       .value("share_below_0_3", c.low_quality_share)
       .value("inverted_hexahedra", c.inverted_hexahedra)
+      .value("flat_hexahedra", c.flat_hexahedra)
       .value("volume", c.total_volume)
       .matrix("irregular_interior_edges", interior)
       .matrix("irregular_boundary_edges", boundary)
@@ -82,7 +83,8 @@ inline void print_hexahedral_mesh_check(std::ostream& out, const CGAL::Hexahedra
       << " duplicate vertices)\n"
       << std::fixed << std::setprecision(3) << "  scaled Jacobian     min " << c.min_scaled_jacobian << ", mean "
       << c.mean_scaled_jacobian << ", " << std::setprecision(1) << 100 * c.low_quality_share << "% below "
-      << c.low_scaled_jacobian_threshold << ", " << c.inverted_hexahedra << " inverted\n" << std::defaultfloat
+      << c.low_scaled_jacobian_threshold << ", " << c.inverted_hexahedra << " inverted, "
+      << c.flat_hexahedra << " flat\n" << std::defaultfloat
       << "  irregular edges     interior by valence " << valence_list(c.irregular_interior_edges)
       << "; boundary by valence " << valence_list(c.irregular_boundary_edges) << "\n";
 }

@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_HEXAHEDRAL_MESH_VALIDATION_H
 
 #include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
 #include <CGAL/Hexahedral_remeshing/internal/union_find.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
@@ -25,6 +26,7 @@ namespace Hexahedral_remeshing {
 namespace internal_np {
 enum duplicate_vertex_tolerance_t { duplicate_vertex_tolerance };
 enum low_scaled_jacobian_threshold_t { low_scaled_jacobian_threshold };
+enum flat_scaled_jacobian_threshold_t { flat_scaled_jacobian_threshold };
 } // namespace internal_np
 
 namespace parameters {
@@ -35,9 +37,13 @@ template <class T> unspecified_type duplicate_vertex_tolerance(const T& value);
 /// Hexahedral mesh check: hexahedra whose scaled Jacobian is below this value are counted as low
 /// quality (`double`, default `0.3`).
 template <class T> unspecified_type low_scaled_jacobian_threshold(const T& value);
+/// Hexahedral mesh check: hexahedra whose scaled Jacobian is positive but below this value are flat
+/// and make the mesh invalid (`double`, default `1e-6`).
+template <class T> unspecified_type flat_scaled_jacobian_threshold(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(duplicate_vertex_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(low_scaled_jacobian_threshold)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(flat_scaled_jacobian_threshold)
 #endif
 } // namespace parameters
 
@@ -109,6 +115,11 @@ struct Hexahedral_mesh_check
   double low_quality_share = 0;
   /// Hexahedra whose scaled Jacobian is <= 0 (inverted or degenerate).
   std::size_t inverted_hexahedra = 0;
+  /// The threshold of `flat_hexahedra`.
+  double flat_scaled_jacobian_threshold = 1e-6;
+  /// Hexahedra whose scaled Jacobian is in (0, `flat_scaled_jacobian_threshold`): positive in floating
+  /// point, but a corner is flat to within rounding, which no solver accepts as an element.
+  std::size_t flat_hexahedra = 0;
   /// Sum of the signed volumes of the hexahedra (each split into 24 tetrahedra through its face and
   /// cell centroids), in model units cubed.
   double total_volume = 0;
@@ -129,7 +140,7 @@ struct Hexahedral_mesh_check
   std::map<int, std::size_t> irregular_interior_chains;
 
   /// At least one hexahedron, none invalid, conforming, manifold boundary, no duplicate vertex or
-  /// hexahedron, and `min_scaled_jacobian > 0`.
+  /// hexahedron, and `min_scaled_jacobian >= flat_scaled_jacobian_threshold` (none inverted or flat).
   bool valid = false;
 };
 
@@ -283,6 +294,12 @@ inline std::size_t count_duplicate_vertices(const std::vector<Hexahedral_mesh_3:
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`0.3`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{flat_scaled_jacobian_threshold}
+///     \cgalParamDescription{positive scaled Jacobian below which a hexahedron is flat (`flat_hexahedra`),
+///       which makes the mesh invalid; must be in [0, 1)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-6`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
@@ -293,6 +310,10 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
   typedef std::uint32_t Id;
   const double relative_tolerance = choose_parameter(get_parameter(np, internal_np::duplicate_vertex_tolerance), 1e-9);
   const double sj_threshold = choose_parameter(get_parameter(np, internal_np::low_scaled_jacobian_threshold), 0.3);
+  const double flat_threshold = choose_parameter(get_parameter(np, internal_np::flat_scaled_jacobian_threshold), 1e-6);
+  if(!(flat_threshold >= 0. && flat_threshold < 1.))
+    throw Error("hexahedral mesh check: flat_scaled_jacobian_threshold must be in [0, 1), got " +
+                std::to_string(flat_threshold));
   const auto& faces = internal::hex_faces();
   const auto& edges = internal::hex_edges();
 
@@ -300,6 +321,7 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
   r.vertices = mesh.points.size();
   r.hexahedra = mesh.hexahedra.size();
   r.low_scaled_jacobian_threshold = sj_threshold;
+  r.flat_scaled_jacobian_threshold = flat_threshold;
 
   // valid hexahedra only from here on
   std::vector<std::size_t> hexes;
@@ -533,7 +555,8 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
       r.min_scaled_jacobian = (std::min)(r.min_scaled_jacobian, sj);
       sum += sj;
       low += (sj < sj_threshold);
-      r.inverted_hexahedra += (sj <= 0.);
+      r.inverted_hexahedra += !(sj > 0.);  // NaN: a corner with a zero-length edge
+      r.flat_hexahedra += (sj > 0. && sj < flat_threshold);
       r.total_volume += internal::hex_signed_volume(p);
     }
     r.mean_scaled_jacobian = sum / double(hexes.size());
@@ -541,7 +564,8 @@ Hexahedral_mesh_check check_hexahedral_mesh(const Hexahedral_mesh_3& mesh,
   }
 
   r.valid = !mesh.hexahedra.empty() && r.invalid_hexahedra == 0 && r.conforming && r.manifold_boundary &&
-            r.duplicate_vertices == 0 && r.duplicate_hexahedra == 0 && r.min_scaled_jacobian > 0.;
+            r.duplicate_vertices == 0 && r.duplicate_hexahedra == 0 && r.inverted_hexahedra == 0 &&
+            r.flat_hexahedra == 0;
   return r;
 }
 

@@ -190,7 +190,7 @@ void check_extracted_hexahedra(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedra
   using CGAL::parameters::get_parameter;
   visitor.start_stage("check");
   const auto t = std::chrono::steady_clock::now();
-  r.check = check_hexahedral_mesh(hexes);
+  r.check = check_hexahedral_mesh(hexes, parameters::flat_scaled_jacobian_threshold(minimum_scaled_jacobian));
   const double diagonal = bounding_box_diagonal(mesh);
   const Feature_fidelity f = measure_feature_fidelity(mesh, r.frame_field.valences, hexes, 1e-6 * diagonal);
   r.feature_length = f.feature_length;
@@ -220,15 +220,18 @@ void decide_remeshing_status(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_
   // A slit along a seam (cells on both sides, no cell across) keeps the topology but puts boundary
   // quads deep inside the solid: the boundary is then far from the input's.
   const bool follows_boundary = !(r.relative_hausdorff_distance > maximum_relative_hausdorff_distance);
-  const bool not_flat = r.check.min_scaled_jacobian >= minimum_scaled_jacobian;
-  if(r.check.valid && missing == 0 && same_topology && follows_boundary && not_flat) {
+  // valid but for flat hexahedra (the check counts them apart from the inverted ones)
+  const bool flat_only = !r.check.valid && r.check.flat_hexahedra > 0 && r.check.inverted_hexahedra == 0 &&
+                         r.check.invalid_hexahedra == 0 && r.check.conforming && r.check.manifold_boundary &&
+                         r.check.duplicate_vertices == 0 && r.check.duplicate_hexahedra == 0;
+  if(r.check.valid && missing == 0 && same_topology && follows_boundary) {
     r.status = Hexahedral_remeshing_status::OK;
     return;
   }
   r.status = Hexahedral_remeshing_status::INVALID_HEX_MESH;
-  if(r.check.valid && missing == 0 && !not_flat) {
+  if(flat_only && missing == 0) {
     std::ostringstream os;
-    os << "a hexahedron is flat (min scaled Jacobian " << r.check.min_scaled_jacobian << ", below "
+    os << r.check.flat_hexahedra << " hexahedra are flat (min scaled Jacobian " << r.check.min_scaled_jacobian << ", below "
        << minimum_scaled_jacobian << ") where the integer-grid map is " << status_name(r.map.status);
     r.message = os.str();
   } else if(r.check.valid && missing == 0 && same_topology) {
