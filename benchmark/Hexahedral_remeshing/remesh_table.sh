@@ -5,7 +5,8 @@
 # field's local meshability check before and after the repair and what became of the repair (with the clusters of
 # curves removed / found at the hex scale), hex count, scaled Jacobian, Hausdorff distance,
 # feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory;
-# cells: those the extraction left out / completed from their neighbours (resolve_conflicting_cells).
+# cells: those the extraction left out / completed from their neighbours (resolve_conflicting_cells); refine: the
+# second run on the refined tetrahedra of a coarse mesh that failed as given (used / tried, rounds); total_s: both runs.
 #   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE or FOLDER...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
@@ -13,8 +14,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/table_inputs.sh"
 out="$build/remesh_table"
 mkdir -p "$out"
 modes=(prescribed); [ "$baseline" -eq 1 ] && modes+=(baseline); [ "$norepair" -eq 1 ] && modes+=(no_repair)
-printf '%-28s %-10s %8s %7s %-17s %-12s %9s %-13s %7s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s\n' model mode tets hexes status failed_at defects repair cells minSJ meanSJ \
-  hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB
+printf '%-28s %-10s %8s %7s %-17s %-12s %9s %-13s %7s %6s %6s %9s %6s %9s %8s %8s %8s %8s %8s %7s %-8s %8s\n' model mode tets hexes status failed_at defects repair cells minSJ meanSJ \
+  hausdorff cover valences field_s repair_s map_s extr_s smooth_s peakMB refine total_s
 for f in "${files[@]}"; do
   name=$(basename "$f"); name="${name%.*}"
   for mode in "${modes[@]}"; do
@@ -48,12 +49,15 @@ if hs.get('clusters'): repair += ' %d/%d' % (hs.get('removed', 0), hs['clusters'
 hd = f['relative_hausdorff_distance']  # null without a smoothed mesh
 ex = r['extraction']  # cells left out / completed from their neighbours
 cells = '%d/%d' % (ex.get('incomplete_cells', 0), ex.get('resolved_cells', 0))
-print('%-28s %-10s %8d %7d %-17s %-12s %9s %-13s %7s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f' % (
+# a second run on the refined tetrahedra of a coarse mesh (tetrahedron_refinement): used or only tried
+tr = r.get('tetrahedron_refinement', {})
+refine = '-' if not tr.get('rounds') else '%s %d' % ('used' if tr.get('used') else 'tried', tr['rounds'])
+print('%-28s %-10s %8d %7d %-17s %-12s %9s %-13s %7s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f %-8s %8.2f' % (
     name, mode, r['tetrahedra'], h['hexahedra'], r['status'], r.get('failed_stage') or '-', defects, repair, cells,
     h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
     '-' if hd is None else '%.2e' % hd, f['coverage'],
     '%d/%d' % (f['hex_feature_edges_with_prescribed_valence'], f['hex_feature_edges']),
-    s['frame_field'], repair_s, s['map'], s['extraction'], s['smoothing'], peak))
+    s['frame_field'], repair_s, s['map'], s['extraction'], s['smoothing'], peak, refine, s['total']))
 PY
   done
 done

@@ -49,7 +49,8 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_hexahedral_mesh.h>
-#include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/run_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/refinement_retry.h>
+#include <CGAL/Hexahedral_remeshing/refine_tetrahedral_mesh.h>
 
 #include <type_traits>
 #include <utility>
@@ -76,7 +77,9 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 /// (`repair_singularity_graph()`, named parameter `singularity_repair`) -> seamless integer-grid map
 /// (Sec. 3.4) -> hex extraction (HexEx, Lyon et al. 2016) -> untangling and smoothing -> check. When the
 /// repaired field gives no valid hex mesh, the field without the repair is tried and kept if its mesh
-/// is valid (`Hexahedral_remeshing_result::repair_fallback`).
+/// is valid (`Hexahedral_remeshing_result::repair_fallback`). When a tetrahedral mesh coarser than the
+/// hexahedra (fewer than 6 tetrahedra per hexahedron) gives no valid hex mesh, its red refinement is tried
+/// and kept if its mesh is valid (`Hexahedral_remeshing_result::refinement`, `tetrahedron_refinement`).
 ///
 /// \tparam Input `Hexahedral_remeshing::Tetrahedral_mesh_3<Traits>`, a CGAL
 ///         `Mesh_complex_3_in_triangulation_3` (its cells, surface patches, feature curves and corners;
@@ -122,6 +125,20 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///     \cgalParamType{`std::reference_wrapper<Hexahedral_remeshing::Integer_grid_map>`}
 ///     \cgalParamDefault{none: the map is discarded}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{tetrahedron_refinement}
+///     \cgalParamDescription{if the mesh has fewer than 6 tetrahedra per hexahedron and gives no valid
+///       hex mesh, run again on its red refinement (`refine_tetrahedral_soup()`, once or twice, up to 6
+///       per hexahedron; the boundary, its patches and features unchanged) and keep that mesh if it is
+///       valid; never with `prescribed_edge_valences` (their edges are the input's)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{refined_mesh_output}
+///     \cgalParamDescription{receives the refined tetrahedral mesh when the hex mesh comes from it
+///       (its first vertices are the input's; `frame_field` and the map refer to it)}
+///     \cgalParamType{`std::reference_wrapper<Hexahedral_remeshing::Tetrahedral_mesh_3<Traits> >`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress hooks of every stage}
 ///     \cgalParamType{a class with the member functions of `Hexahedral_remeshing::Hexahedral_remeshing_visitor`}
@@ -149,7 +166,7 @@ hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& 
     HR::hexahedral_mesh_to_lcc(hexes, output);
     return r;
   } else if constexpr(HR::internal::Is_tetrahedral_mesh<Input>::value) {
-    return HR::internal::run_hexahedral_remeshing(input, output, np);
+    return HR::internal::run_hexahedral_remeshing_or_refine(input, output, np);
   } else {
     typedef std::chrono::steady_clock Clock;
     const auto start = Clock::now();
@@ -174,7 +191,7 @@ hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& 
     Mesh mesh;
     HR::build_tetrahedral_mesh(soup, mesh, HR::parameters::split_boundary_chords(true));
     const double preprocessing = std::chrono::duration<double>(Clock::now() - start).count();
-    HR::Hexahedral_remeshing_result r = HR::internal::run_hexahedral_remeshing(mesh, output, np);
+    HR::Hexahedral_remeshing_result r = HR::internal::run_hexahedral_remeshing_or_refine(mesh, output, np);
     r.preprocessing_seconds = preprocessing;
     r.seconds += preprocessing;
     return r;

@@ -4,6 +4,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/mesh_statistics.h>
+#include <CGAL/Hexahedral_remeshing/refine_tetrahedral_mesh.h>
 
 #include <gtest/gtest.h>
 
@@ -258,6 +259,117 @@ TEST(Readers, NoSplitKeepsInputTetrahedra)
   HR::IO::read_tetrahedral_mesh(test_data + "/two_tets.vtk", m, HR::parameters::split_multi_boundary_tetrahedra(false));
   EXPECT_EQ(m.number_of_tetrahedra(), 2u);
   EXPECT_EQ(m.number_of_vertices(), 5u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Red refinement (refine_tetrahedral_soup): the same solid, boundary and features on more tetrahedra
+
+namespace {
+
+// Volume (from the points, floating point) and exact orientation counts of a soup's tetrahedra.
+struct Soup_volume { double volume = 0; std::size_t positive = 0, negative = 0; };
+Soup_volume soup_volume(const HR::Tetrahedral_soup_3<Point>& soup)
+{
+  Soup_volume r;
+  for(const auto& t : soup.tetrahedra) {
+    const Point& a = soup.points[t[0]];
+    const CGAL::Orientation o = CGAL::orientation(a, soup.points[t[1]], soup.points[t[2]], soup.points[t[3]]);
+    (o == CGAL::POSITIVE ? r.positive : r.negative) += (o != CGAL::COPLANAR);
+    r.volume += std::abs(CGAL::to_double(CGAL::determinant(soup.points[t[1]] - a, soup.points[t[2]] - a, soup.points[t[3]] - a))) / 6;
+  }
+  return r;
+}
+
+// Boundary area and the number of boundary edges of each exact dihedral class.
+std::pair<double, std::map<int, std::size_t> > boundary_summary(const Mesh& m)
+{
+  double area = 0;
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b) {
+    const auto& v = m.boundary_triangle_vertices(b);
+    area += std::sqrt(CGAL::to_double(CGAL::cross_product(m.point(v[1]) - m.point(v[0]), m.point(v[2]) - m.point(v[0])).squared_length())) / 2;
+  }
+  std::map<int, std::size_t> classes;
+  for(Index e : m.boundary_edges()) ++classes[HR::boundary_edge_dihedral_class(m, e)];
+  return {area, classes};
+}
+
+} // namespace
+
+TEST(Refinement, RedRefinementKeepsTheSolidItsBoundaryAndFeatures)
+{
+  // the shipped HexMe 10-degree wedge (0.3 tetrahedra per hexahedron at the default size)
+  HR::Tetrahedral_soup_3<Point> input;
+  HR::IO::read_tetrahedral_soup(example_data + "/n13c_acute_line.vtk", input);
+  Mesh coarse;
+  HR::build_tetrahedral_mesh(input, coarse, HR::parameters::split_multi_boundary_tetrahedra(false));
+  ASSERT_GT(input.triangles.size(), 0u);
+  const Soup_volume v0 = soup_volume(input);
+  const auto b0 = boundary_summary(coarse);
+  for(int rounds : {1, 2}) {
+    HR::Tetrahedral_soup_3<Point> fine;
+    HR::refine_tetrahedral_soup(input, fine, rounds);
+    const std::size_t k = std::size_t(1) << (3 * rounds);  // 8^rounds
+    EXPECT_EQ(fine.tetrahedra.size(), k * input.tetrahedra.size());
+    EXPECT_EQ(fine.tetrahedron_lines.size(), fine.tetrahedra.size());
+    EXPECT_EQ(fine.triangles.size(), (std::size_t(1) << (2 * rounds)) * input.triangles.size());
+    EXPECT_EQ(fine.feature_edges.size(), (std::size_t(1) << rounds) * input.feature_edges.size());
+    EXPECT_EQ(fine.corners, input.corners);
+    for(std::size_t i = 0; i < input.points.size(); ++i) ASSERT_EQ(fine.points[i], input.points[i]) << i;
+    // every child has the orientation of the input's tetrahedra (all positive in this file), the
+    // volume is the same
+    const Soup_volume v = soup_volume(fine);
+    EXPECT_EQ(v.negative, k * v0.negative) << rounds;
+    EXPECT_EQ(v.positive, k * v0.positive) << rounds;
+    EXPECT_NEAR(v.volume, v0.volume, 1e-12 * v0.volume) << rounds;
+    // a conforming mesh (the build throws on a face of three tetrahedra or overlapping ones) with
+    // the boundary triangles split 1-to-4, the same boundary topology and area, and each feature
+    // edge in 2^rounds edges of the same exact dihedral class (flat ones: more, inside the faces)
+    Mesh m;
+    ASSERT_NO_THROW(HR::build_tetrahedral_mesh(fine, m, HR::parameters::split_multi_boundary_tetrahedra(false)));
+    EXPECT_EQ(m.number_of_tetrahedra(), fine.tetrahedra.size());
+    EXPECT_EQ(m.number_of_boundary_triangles(), (std::size_t(1) << (2 * rounds)) * coarse.number_of_boundary_triangles());
+    EXPECT_EQ(m.number_of_boundary_components(), coarse.number_of_boundary_components());
+    EXPECT_EQ(m.boundary_euler_characteristic(), coarse.boundary_euler_characteristic());
+    EXPECT_EQ(m.number_of_feature_curves(), coarse.number_of_feature_curves());
+    EXPECT_EQ(m.number_of_surface_patches(), coarse.number_of_surface_patches());
+    const auto b = boundary_summary(m);
+    EXPECT_NEAR(b.first, b0.first, 1e-12 * b0.first);
+    for(const auto& c : b0.second)
+      if(c.first != 2) EXPECT_EQ(b.second.at(c.first), (std::size_t(1) << rounds) * c.second) << "class " << c.first;
+  }
+  HR::Tetrahedral_soup_3<Point> same;
+  HR::refine_tetrahedral_soup(input, same, 0);
+  EXPECT_EQ(same.tetrahedra, input.tetrahedra);
+  EXPECT_THROW(HR::refine_tetrahedral_soup(input, same, 5), HR::Error);
+  EXPECT_THROW(HR::refine_tetrahedral_soup(input, same, -1), HR::Error);
+}
+
+TEST(Refinement, SoupOfAMeshBuildsTheSameMesh)
+{
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  HR::Tetrahedral_soup_3<Point> soup;
+  HR::tetrahedral_soup_from_mesh(m, soup);
+  Mesh again;
+  HR::build_tetrahedral_mesh(soup, again);
+  EXPECT_EQ(again.number_of_tetrahedra(), m.number_of_tetrahedra());
+  EXPECT_EQ(again.number_of_vertices(), m.number_of_vertices());
+  EXPECT_EQ(again.number_of_boundary_triangles(), m.number_of_boundary_triangles());
+  EXPECT_EQ(again.number_of_feature_edges(), m.number_of_feature_edges());
+  EXPECT_EQ(again.number_of_feature_curves(), m.number_of_feature_curves());
+  EXPECT_EQ(again.corners(), m.corners());
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) ASSERT_EQ(again.tetrahedron_vertices(t), m.tetrahedron_vertices(t));
+}
+
+TEST(Refinement, RoundsBringTheMeshToSixTetrahedraPerHexahedron)
+{
+  // 1000 tetrahedra in a unit volume: 1 per hexahedron of edge 0.1 -> 8 after one round
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(1000, 1., 0.1), 1);
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(6000, 1., 0.1), 0);
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(700, 1., 0.1), 2);      // 0.7 -> 5.6 -> 44.8
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(10, 1., 0.1), 2);       // at most two rounds
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(10, 1., 0.1, 6, 4), 4);
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(1000, 1., 0.), 0);      // no size
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(1000, 0., 0.1), 0);     // no volume
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -164,13 +164,58 @@ TEST(HexahedralRemeshing, FlatHexahedronIsNotOK)
   HR::Hexahedral_remeshing_result r = CGAL::hexahedral_remeshing(m, hexes, HR::parameters::target_edge_length(0.5));
   ASSERT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
   ASSERT_TRUE(r.check.valid);
+  EXPECT_EQ(r.check.flat_hexahedra, 0u);
+  EXPECT_EQ(r.check.flat_scaled_jacobian_threshold, HR::internal::minimum_scaled_jacobian);
+  // what the check reports of a mesh with one hexahedron at 4.6e-15 (n03c after the untangling)
+  const HR::Hexahedral_mesh_check sound = r.check;
   r.check.min_scaled_jacobian = 4.6e-15;
+  r.check.flat_hexahedra = 1;
+  r.check.valid = false;
   HR::internal::decide_remeshing_status(m, r);
   EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::INVALID_HEX_MESH);
-  EXPECT_NE(r.message.find("flat"), std::string::npos) << r.message;
-  r.check.min_scaled_jacobian = 1e-3;
+  EXPECT_NE(r.message.find("1 hexahedra are flat"), std::string::npos) << r.message;
+  r.check = sound;
   HR::internal::decide_remeshing_status(m, r);
   EXPECT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+}
+
+// The HexMe tetrahedra of the 10-degree wedge are coarser than the hexahedra (2,573 after the splits, 1.3
+// per hexahedron): the map collapses and gives no hexahedron. The second run on their red refinement
+// gives a valid mesh, checked here from its cells; without the refinement the call fails as before.
+TEST(HexahedralRemeshing, CoarseMeshThatFailsIsRefinedAndRemeshed)
+{
+  const Mesh m = load(example_data + "/n13c_acute_line.vtk");
+  Mesh fine;
+  HR::Hexahedral_mesh_3 hexes;
+  const HR::Hexahedral_remeshing_result r =
+    CGAL::hexahedral_remeshing(m, hexes, HR::parameters::refined_mesh_output(std::ref(fine)));
+  ASSERT_EQ(r.status, HR::Hexahedral_remeshing_status::OK) << r.message;
+  EXPECT_TRUE(r.refinement.used);
+  EXPECT_EQ(r.refinement.rounds, 1);
+  EXPECT_EQ(r.refinement.other_outcome.rfind("NO_HEXAHEDRA", 0), 0u) << r.refinement.other_outcome;
+  EXPECT_EQ(fine.number_of_tetrahedra(), r.refinement.tetrahedra);
+  EXPECT_EQ(r.tetrahedra, r.refinement.tetrahedra);
+  EXPECT_GE(fine.number_of_tetrahedra(), 8 * m.number_of_tetrahedra());
+  for(Mesh::Index v = 0; v < m.number_of_vertices(); ++v) ASSERT_EQ(fine.point(v), m.point(v)) << v;
+  EXPECT_EQ(r.frame_field.valences.size(), fine.number_of_edges());  // the reports describe the refined mesh
+  const Cell_check c = check_cells(hexes);
+  EXPECT_GT(hexes.hexahedra.size(), 1000u);
+  EXPECT_EQ(c.non_positive_corners, 0u);
+  EXPECT_EQ(c.bad_quads, 0u);
+  double solid = 0;
+  for(Mesh::Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    const auto& tv = m.tetrahedron_vertices(t);
+    solid += CGAL::volume(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
+  }
+  EXPECT_NEAR(c.volume, solid, 0.01 * solid);
+
+  HR::Hexahedral_mesh_3 coarse_hexes;
+  const HR::Hexahedral_remeshing_result off =
+    CGAL::hexahedral_remeshing(m, coarse_hexes, HR::parameters::tetrahedron_refinement(false));
+  EXPECT_NE(off.status, HR::Hexahedral_remeshing_status::OK);
+  EXPECT_EQ(off.refinement.rounds, 0);
+  EXPECT_FALSE(off.refinement.used);
+  EXPECT_EQ(off.tetrahedra, m.number_of_tetrahedra());
 }
 
 TEST(HexahedralRemeshing, SurfaceMeshInLinearCellComplexOut)

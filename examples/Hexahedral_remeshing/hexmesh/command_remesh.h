@@ -33,7 +33,7 @@ inline std::vector<std::string> remesh_options()
   return options;
 }
 
-inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-smoothing", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-smoothing", "no-chord-split", "no-tet-refinement", "no-acute-grading", "keep-partial", "quiet"}; }
 
 inline int command_remesh(const Arguments& args)
 {
@@ -64,6 +64,7 @@ inline int command_remesh(const Arguments& args)
   HR::Hexahedral_mesh_3 hexes;
   HR::Hexahedral_remeshing_result r;
   HR::Integer_grid_map map;
+  Mesh refined;  // the refined tetrahedra, when the hex mesh comes from them (r.refinement.used)
   // the size is the tail of the parameter chain: --target-edge-length, else --hexahedra, else the default
   auto run = [&](const auto& size) {
     return CGAL::hexahedral_remeshing(
@@ -71,7 +72,8 @@ inline int command_remesh(const Arguments& args)
       HP::valence_heuristic(options.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
         HP::baseline(options.baseline, HP::realignment(options.realign, HP::singularity_repair(options.repair,
         HP::hexahedral_smoothing(!args.has("no-smoothing"), HP::acute_edge_band_radius(options.acute_edge_band,
-        HP::quantization(options.quantization, HP::singular_vertex_relocation(options.relocation, HP::integer_grid_map_output(std::ref(map), size)))))))))).visitor(std::ref(visitor)));
+        HP::quantization(options.quantization, HP::singular_vertex_relocation(options.relocation, HP::integer_grid_map_output(std::ref(map),
+        HP::tetrahedron_refinement(!args.has("no-tet-refinement"), HP::refined_mesh_output(std::ref(refined), size)))))))))))).visitor(std::ref(visitor)));
   };
   try {
     if(target > 0) r = run(HP::target_edge_length(target));
@@ -81,6 +83,8 @@ inline int command_remesh(const Arguments& args)
   } catch(const std::exception& e) {
     throw Stage_error(std::string("remeshing of ") + in + ": " + e.what());
   }
+  // the outputs per element (frames, singularities, valences) refer to the mesh the hexahedra come from
+  if(r.refinement.used) mesh = std::move(refined);
   const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, r.frame_field.valences, r.map_check);
   const bool ok = r.status == HR::Hexahedral_remeshing_status::OK;
   const bool write_hexes = ok || (args.has("keep-partial") && hexes.number_of_hexahedra() > 0);
@@ -110,6 +114,13 @@ inline int command_remesh(const Arguments& args)
     json.begin().value("input", in).value("output", write_hexes ? out : std::string()).value("status", HR::status_name(r.status))
         .value("message", r.message).value("failed_stage", r.failed_stage).value("failure_reason", r.failure_reason).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra)
         .value("repair_fallback", r.repair_fallback).value("repaired_field_outcome", r.repaired_field_outcome);
+    json.begin("tetrahedron_refinement")
+        .value("rounds", r.refinement.rounds)
+        .value("tetrahedra", r.refinement.tetrahedra)
+        .value("used", r.refinement.used)
+        .value("other_outcome", r.refinement.other_outcome)
+        .value("other_seconds", r.refinement.other_seconds)
+        .end();
     json.begin("frame_field")
         .value("energy", f.frame_field.energy)
         .value("E_initial", f.constraints.initial_energy)
@@ -186,6 +197,11 @@ inline int command_remesh(const Arguments& args)
     if(r.repair_fallback)
       std::cout << "  repair fallback     the repaired field gave " << r.repaired_field_outcome
                 << "; this hex mesh is the field's without the repair\n";
+    if(r.refinement.rounds > 0)
+      std::cout << "  tet refinement      " << (r.refinement.used ? "used" : "tried") << ": " << r.refinement.rounds
+                << (r.refinement.rounds == 1 ? " round" : " rounds") << " of 1-to-8, " << r.refinement.tetrahedra
+                << " tetrahedra; the " << (r.refinement.used ? "mesh as given" : "refined mesh") << " gave "
+                << r.refinement.other_outcome << "\n";
     print_integer_grid_map(std::cout, r.map, r.map_check, agreement);
     if(hexes.number_of_hexahedra() > 0) {
       print_hexahedral_mesh_check(std::cout, r.check);

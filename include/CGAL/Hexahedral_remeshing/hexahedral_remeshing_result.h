@@ -20,6 +20,8 @@ namespace internal_np {
 enum number_of_hexahedra_t { number_of_hexahedra };
 enum hexahedral_smoothing_t { hexahedral_smoothing };
 enum integer_grid_map_output_t { integer_grid_map_output };
+enum tetrahedron_refinement_t { tetrahedron_refinement };
+enum refined_mesh_output_t { refined_mesh_output };
 } // namespace internal_np
 
 namespace parameters {
@@ -32,10 +34,22 @@ template <class T> unspecified_type hexahedral_smoothing(const T& value);
 /// `hexahedral_remeshing()`: receives the integer-grid map the hexahedra come from
 /// (`std::reference_wrapper<Integer_grid_map>`, e.g. `std::ref(map)`; default: none kept).
 template <class T> unspecified_type integer_grid_map_output(const T& value);
+/// `hexahedral_remeshing()`: when the mesh as given has fewer than 6 tetrahedra per hexahedron and gives
+/// no valid hex mesh, run again on its red refinement (`refine_tetrahedral_soup()`, once or twice) and
+/// keep that hex mesh if it is valid (`bool`, default `true`; never with `prescribed_edge_valences`,
+/// whose edges are the input's).
+template <class T> unspecified_type tetrahedron_refinement(const T& value);
+/// `hexahedral_remeshing()`: receives the refined tetrahedral mesh when the hex mesh comes from it
+/// (`Hexahedral_remeshing_result::refinement`; `std::reference_wrapper<Tetrahedral_mesh_3<Traits> >`,
+/// e.g. `std::ref(fine)`; untouched otherwise). Its first vertices are those of the input, and the
+/// per-element reports (`frame_field`) refer to it.
+template <class T> unspecified_type refined_mesh_output(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(number_of_hexahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(hexahedral_smoothing)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(integer_grid_map_output)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(tetrahedron_refinement)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(refined_mesh_output)
 #endif
 } // namespace parameters
 
@@ -93,6 +107,24 @@ struct Hexahedral_remeshing_visitor : Frame_field_pipeline_visitor
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
+/// The second run of `CGAL::hexahedral_remeshing()` on the red refinement of a tetrahedral mesh coarser
+/// than the hexahedra (named parameter `tetrahedron_refinement`).
+struct Tetrahedron_refinement_report
+{
+  /// Rounds of 1-to-8 refinement of the second run; 0 if there was none (the first run gave a valid
+  /// mesh, the mesh has 6 tetrahedra or more per hexahedron, or the refinement is off).
+  int rounds = 0;
+  /// Tetrahedra of the refined mesh the second run ran on.
+  std::size_t tetrahedra = 0;
+  /// True if the hex mesh and every report come from the refined mesh (valid there, not on the mesh as given).
+  bool used = false;
+  /// The status, failed stage and message of the run whose result was not kept.
+  std::string other_outcome;
+  /// Seconds of the run whose result was not kept (included in `Hexahedral_remeshing_result::seconds`).
+  double other_seconds = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
 /// Everything `CGAL::hexahedral_remeshing()` computes, stage by stage.
 struct Hexahedral_remeshing_result
 {
@@ -116,6 +148,8 @@ struct Hexahedral_remeshing_result
   bool repair_fallback = false;
   /// With `repair_fallback`: the status, failed stage and message of the run on the repaired field.
   std::string repaired_field_outcome;
+  /// The run on the refined tetrahedral mesh, if any (`tetrahedron_refinement`).
+  Tetrahedron_refinement_report refinement;
   /// Valences, constraints, frame field, matchings, singularity graph, realignment.
   Frame_field_pipeline_result frame_field;
   /// Report of the integer-grid map (target edge length used, status, inverted tetrahedra, ...).
