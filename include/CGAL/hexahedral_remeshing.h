@@ -78,7 +78,7 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 /// (Sec. 3.4) -> hex extraction (HexEx, Lyon et al. 2016) -> untangling and smoothing -> check. When the
 /// repaired field gives no valid hex mesh, the field without the repair is tried and kept if its mesh
 /// is valid (`Hexahedral_remeshing_result::repair_fallback`). When a tetrahedral mesh coarser than the
-/// hexahedra (fewer than 6 tetrahedra per hexahedron) gives no valid hex mesh, its red refinement is tried
+/// hexahedra (fewer than 12 tetrahedra per hexahedron) gives no valid hex mesh, its red refinement is tried
 /// and kept if its mesh is valid (`Hexahedral_remeshing_result::refinement`, `tetrahedron_refinement`).
 ///
 /// \tparam Input `Hexahedral_remeshing::Tetrahedral_mesh_3<Traits>`, a CGAL
@@ -126,8 +126,8 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///     \cgalParamDefault{none: the map is discarded}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{tetrahedron_refinement}
-///     \cgalParamDescription{if the mesh has fewer than 6 tetrahedra per hexahedron and gives no valid
-///       hex mesh, run again on its red refinement (`refine_tetrahedral_soup()`, once or twice, up to 6
+///     \cgalParamDescription{if the mesh has fewer than 12 tetrahedra per hexahedron and gives no valid
+///       hex mesh, run again on its red refinement (`refine_tetrahedral_soup()`, once, or twice below 0.75
 ///       per hexahedron; the boundary, its patches and features unchanged) and keep that mesh if it is
 ///       valid; never with `prescribed_edge_valences` (their edges are the input's)}
 ///     \cgalParamType{`bool`}

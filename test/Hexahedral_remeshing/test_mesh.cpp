@@ -364,10 +364,11 @@ TEST(Refinement, RoundsBringTheMeshToSixTetrahedraPerHexahedron)
 {
   // 1000 tetrahedra in a unit volume: 1 per hexahedron of edge 0.1 -> 8 after one round
   EXPECT_EQ(HR::tetrahedron_refinement_rounds(1000, 1., 0.1), 1);
-  EXPECT_EQ(HR::tetrahedron_refinement_rounds(6000, 1., 0.1), 0);
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(8000, 1., 0.1), 1);     // below 12: one round
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(12000, 1., 0.1), 0);    // 12 per hexahedron: none
   EXPECT_EQ(HR::tetrahedron_refinement_rounds(700, 1., 0.1), 2);      // 0.7 -> 5.6 -> 44.8
   EXPECT_EQ(HR::tetrahedron_refinement_rounds(10, 1., 0.1), 2);       // at most two rounds
-  EXPECT_EQ(HR::tetrahedron_refinement_rounds(10, 1., 0.1, 6, 4), 4);
+  EXPECT_EQ(HR::tetrahedron_refinement_rounds(10, 1., 0.1, 6, 12, 4), 4);
   EXPECT_EQ(HR::tetrahedron_refinement_rounds(1000, 1., 0.), 0);      // no size
   EXPECT_EQ(HR::tetrahedron_refinement_rounds(1000, 0., 0.1), 0);     // no volume
 }

@@ -88,7 +88,7 @@ const char* usage =
   "                            seamless_map; rounding; extraction; smoothing; check) and the\n"
   "                            reason, and writes no hex mesh, unless --keep-partial.\n"
   "                            A surface or CAD input is tetrahedralized at the hex size unless\n"
-  "                            --max-volume or --mesh-size is given. A tet mesh with fewer than 6\n"
+  "                            --max-volume or --mesh-size is given. A tet mesh with fewer than 12\n"
   "                            tetrahedra per hexahedron that gives no valid hex mesh is refined\n"
   "                            1-to-8 (once or twice, the boundary kept) and remeshed again; that\n"
   "                            mesh is kept if valid (not with --no-tet-refinement or --valences).\n"  "                            A part whose walls are thinner than half the hex edge (over half of\n"

@@ -34,7 +34,7 @@ template <class T> unspecified_type hexahedral_smoothing(const T& value);
 /// `hexahedral_remeshing()`: receives the integer-grid map the hexahedra come from
 /// (`std::reference_wrapper<Integer_grid_map>`, e.g. `std::ref(map)`; default: none kept).
 template <class T> unspecified_type integer_grid_map_output(const T& value);
-/// `hexahedral_remeshing()`: when the mesh as given has fewer than 6 tetrahedra per hexahedron and gives
+/// `hexahedral_remeshing()`: when the mesh as given has fewer than 12 tetrahedra per hexahedron and gives
 /// no valid hex mesh, run again on its red refinement (`refine_tetrahedral_soup()`, once or twice) and
 /// keep that hex mesh if it is valid (`bool`, default `true`; never with `prescribed_edge_valences`,
 /// whose edges are the input's).

@@ -77,23 +77,26 @@ void tetrahedral_soup_from_mesh(const Tetrahedral_mesh_3<Traits>& mesh, Tetrahed
 }
 
 /// \ingroup PkgHexahedralRemeshingRef
-/// Number of red refinement rounds (`refine_tetrahedral_soup()`) after which `tetrahedra` tetrahedra of
-/// total volume `volume` have at least `tetrahedra_per_hexahedron` tetrahedra per hexahedron of edge `h`
-/// (per volume `h^3`), at most `maximum_rounds`. A frame field on tetrahedra coarser than the
-/// hexahedra places its singular curves and feature sectors at the scale of the tetrahedra (the
-/// HexMe mesh of the 10-degree wedge, 1.3 tetrahedra per hexahedron after the splits of the build: a
-/// collapsed map; refined once, 10 per hexahedron: a valid hex mesh). 0 for an invalid size or volume.
-inline int tetrahedron_refinement_rounds(std::size_t tetrahedra, double volume, double h,
-                                         double tetrahedra_per_hexahedron = 6, int maximum_rounds = 2)
+/// Number of red refinement rounds (`refine_tetrahedral_soup()`) for `tetrahedra` tetrahedra of total
+/// volume `volume` and hexahedra of edge `h`, with `density` tetrahedra per hexahedron (per volume `h^3`):
+/// 0 if `density >= trigger`, else the fewest rounds (at least 1, at most `maximum_rounds`) after which
+/// `density * 8^rounds >= minimum`. A frame field on tetrahedra not much finer than the hexahedra places
+/// its singular curves and feature sectors at the scale of the tetrahedra: the HexMe mesh of the
+/// 10-degree wedge (1.3 tetrahedra per hexahedron after the splits of the build) gives a collapsed map,
+/// refined once a valid hex mesh; the MAMBO part B45 (8.2 per hexahedron) two flat hexahedra, refined
+/// once a valid mesh. 0 for an invalid size or volume.
+inline int tetrahedron_refinement_rounds(std::size_t tetrahedra, double volume, double h, double minimum = 6,
+                                         double trigger = 12, int maximum_rounds = 2)
 {
   if(!(h > 0) || !std::isfinite(h) || !(volume > 0) || !std::isfinite(volume) || tetrahedra == 0) return 0;
   const double hexahedra = volume / (h * h * h);
   double density = double(tetrahedra) / hexahedra;
+  if(density >= trigger) return 0;
   int rounds = 0;
-  while(density < tetrahedra_per_hexahedron && rounds < maximum_rounds) {
+  do {
     density *= 8;
     ++rounds;
-  }
+  } while(density < minimum && rounds < maximum_rounds);
   return rounds;
 }
 

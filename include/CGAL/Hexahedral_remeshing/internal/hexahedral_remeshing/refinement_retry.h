@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s) : Hexahedral_remeshing developers
 //
-// The second chance of a coarse tetrahedral mesh: where the mesh as given (fewer than 6 tetrahedra per
+// The second chance of a coarse tetrahedral mesh: where the mesh as given (fewer than 12 tetrahedra per
 // hexahedron) gives no valid hex mesh, the pipeline runs again on its red refinement and the refined
 // result is kept if it is valid. The field's singular curves, the feature sectors and the map's folds
 // live at the scale of the tetrahedra: on the HexMe 10-degree wedge (592 tetrahedra, 2,573 after the
