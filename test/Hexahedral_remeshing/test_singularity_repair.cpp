@@ -254,12 +254,12 @@ int quarter_turn_about_z()
   return -1;
 }
 
-// Gives every interior face of kuhn_box in the plane y = 0 with x0 < x < x1 (all heights) `power`
-// quarter turns about z, crossing from y < 0 to y > 0 (the frames all the identity): the lines
-// x = x0 and x = x1 of that plane become singular curves from bottom to top; around the strip's two
-// sides the holonomies are opposite (a valence-3 curve beside a valence-5 one) when the strip is
-// interior.
-void add_strip(const Mesh& m, HR::Matchings& matchings, double x0, double x1, int power)
+// Gives every interior face of kuhn_box in the plane y = 0 with x0 < x < x1 and z < z1 (all heights by
+// default) `power` quarter turns about z, crossing from y < 0 to y > 0 (the frames all the identity):
+// the lines x = x0 and x = x1 of that plane become singular curves from bottom to top; around the
+// strip's two sides the holonomies are opposite (a valence-3 curve beside a valence-5 one) when the
+// strip is interior. Below the top (z1 < 8), the segment z = z1 of the plane is singular too.
+void add_strip(const Mesh& m, HR::Matchings& matchings, double x0, double x1, int power, double z1 = 1e30)
 {
   const auto points = points_of(m);
   const HR::internal::Octahedral_group& group = HR::internal::octahedral_group();
@@ -267,10 +267,10 @@ void add_strip(const Mesh& m, HR::Matchings& matchings, double x0, double x1, in
   for(Index f = 0; f < m.number_of_faces(); ++f) {
     if(m.is_boundary_face(f)) continue;
     const auto& fv = m.face_vertices(f);
-    double x = 0;
+    double x = 0, z = 0;
     bool in_plane = true;
-    for(Index v : fv) { in_plane = in_plane && points[v].y() == 0; x += points[v].x() / 3; }
-    if(!in_plane || x < x0 || x > x1) continue;
+    for(Index v : fv) { in_plane = in_plane && points[v].y() == 0; x += points[v].x() / 3; z += points[v].z() / 3; }
+    if(!in_plane || x < x0 || x > x1 || z > z1) continue;
     const auto& tv = m.tetrahedron_vertices(m.face_tetrahedra(f)[0]);
     double y0 = 0;
     for(Index v : tv) y0 += points[v].y();
@@ -344,6 +344,156 @@ TEST(Meshability, CloseThreeFivePairRemovedAtTheHexScale)
   EXPECT_TRUE(same.face_matching == same_before);
   std::printf("3-5 pair: %zu singular edges -> %zu (%zu faces changed); 3-3 pair kept: %zu singular edges\n",
               before.singular.size(), after.singular.size(), r.changed_faces, evaluate_matchings(m, frames, same).singular.size());
+}
+
+namespace {
+
+// Independently of the package: the unit normals of the boundary triangles (faces of one tetrahedron) at
+// vertex v, oriented out of the solid.
+std::vector<Eigen::Vector3d> boundary_normals_at(const Mesh& m, Index v)
+{
+  const auto points = points_of(m);
+  std::map<std::array<std::size_t, 3>, std::vector<std::size_t> > faces;
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    const auto& tv = m.tetrahedron_vertices(t);
+    for(int i = 0; i < 4; ++i) {
+      std::array<std::size_t, 3> f;
+      int k = 0;
+      for(int j = 0; j < 4; ++j) if(j != i) f[k++] = tv[j];
+      std::sort(f.begin(), f.end());
+      faces[f].push_back(tv[i]);
+    }
+  }
+  std::vector<Eigen::Vector3d> normals;
+  for(const auto& f : faces) {
+    if(f.second.size() != 1 || std::find(f.first.begin(), f.first.end(), std::size_t(v)) == f.first.end()) continue;
+    Eigen::Vector3d n = (points[f.first[1]] - points[f.first[0]]).cross(points[f.first[2]] - points[f.first[0]]).normalized();
+    if(n.dot(points[f.second[0]] - points[f.first[0]]) > 0) n = -n;
+    normals.push_back(n);
+  }
+  return normals;
+}
+
+} // namespace
+
+// A singular curve bent into a side face: the quarter turns about z of the faces of the rectangle y = 0,
+// 0 < x < 3, z < 4 of kuhn_box (identity frames) make the line x = y = 0 singular from the bottom to z = 4
+// and the segment (0,0,4)-(3,0,4) singular up to the side x = 3 (edges perpendicular to their axis: jogs).
+// The curve ends on the bottom, which it crosses (normal along its axis z), and on the side x = 3, which
+// runs along it (normal x): the map would put the whole curve in the plane of that side. The check reports
+// that end and no other; the same curve straight to the top has none.
+TEST(Meshability, CurveEndingAlongASideFaceIsReported)
+{
+  const Mesh m = kuhn_box();
+  const std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra(), Eigen::Matrix3d::Identity());
+  const auto points = points_of(m);
+  HR::Matchings bent = HR::compute_matchings(m, frames);
+  add_strip(m, bent, 0, 3, 1, 4);
+  const auto verdict = evaluate_matchings(m, frames, bent);
+  // independently: 2 edges on the axis from z = 0 to 4, 3 jogs from (0,0,4) to (3,0,4)
+  ASSERT_EQ(verdict.singular.size(), 5u);
+  EXPECT_EQ(verdict.jogs, 3u);
+  std::map<std::size_t, int> degree;
+  for(const auto& e : verdict.singular)
+    for(std::size_t v : e.vertices) ++degree[v];
+  std::vector<std::size_t> ends;
+  for(const auto& d : degree)
+    if(d.second == 1) ends.push_back(d.first);
+  ASSERT_EQ(ends.size(), 2u);
+  std::size_t along = 0, crossed = 0;
+  for(std::size_t v : ends) {
+    // the holonomy axis is z: an end is in a boundary plane if one of its faces' normals is not along z
+    bool transverse = false;
+    for(const Eigen::Vector3d& n : boundary_normals_at(m, Index(v))) transverse = transverse || std::abs(n.z()) < std::sqrt(0.5);
+    (transverse ? along : crossed) = v;
+  }
+  EXPECT_TRUE(points[along].isApprox(Eigen::Vector3d(3, 0, 4)));
+  EXPECT_TRUE(points[crossed].isApprox(Eigen::Vector3d(0, 0, 0)));
+
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, bent);
+  EXPECT_EQ(check.count(HR::Meshability_reason::JOG), 3u);
+  ASSERT_EQ(check.count(HR::Meshability_reason::END_IN_BOUNDARY_PLANE), 1u);
+  for(const auto& v : check.violations)
+    if(v.reason == HR::Meshability_reason::END_IN_BOUNDARY_PLANE) {
+      EXPECT_EQ(std::size_t(v.index), along);
+      EXPECT_TRUE(v.position.isApprox(Eigen::Vector3d(3, 0, 4)));
+    }
+  EXPECT_STREQ(HR::meshability_reason_name(HR::Meshability_reason::END_IN_BOUNDARY_PLANE), "end_in_boundary_plane");
+  EXPECT_EQ(check.graph_defects(), 4u);
+
+  HR::Matchings straight = HR::compute_matchings(m, frames);
+  add_strip(m, straight, 0, 3, 1);
+  EXPECT_EQ(evaluate_matchings(m, frames, straight).defects(), 0u);
+  EXPECT_EQ(HR::check_local_meshability(m, frames, straight).count(HR::Meshability_reason::END_IN_BOUNDARY_PLANE), 0u);
+
+  HR::Matchings with_normals = bent;
+  const auto rn = HR::repair_singularity_graph(m, frames, with_normals, HR::boundary_triangle_unit_normals(m));
+  const auto repaired_n = evaluate_matchings(m, frames, with_normals);
+  std::printf("bent curve with the normals: %zu singular edges (%zu jogs), %zu faces changed, ends in a boundary plane %zu -> %zu\n",
+              repaired_n.singular.size(), repaired_n.jogs, rn.changed_faces,
+              rn.defects_before[std::size_t(HR::Meshability_reason::END_IN_BOUNDARY_PLANE)],
+              rn.defects_after[std::size_t(HR::Meshability_reason::END_IN_BOUNDARY_PLANE)]);
+  const auto r = HR::repair_singularity_graph(m, frames, bent);
+  const auto repaired = evaluate_matchings(m, frames, bent);
+  std::printf("bent curve: %zu singular edges (%zu jogs) -> %zu (%zu jogs), %zu faces changed, ends in a boundary plane %zu -> %zu\n",
+              verdict.singular.size(), verdict.jogs, repaired.singular.size(), repaired.jogs, r.changed_faces,
+              r.defects_before[std::size_t(HR::Meshability_reason::END_IN_BOUNDARY_PLANE)],
+              r.defects_after[std::size_t(HR::Meshability_reason::END_IN_BOUNDARY_PLANE)]);
+}
+
+// A straight singular curve x = 2, y = 0 of kuhn_box (the strip 2 < x < 3 of quarter turns, identity frames)
+// whose last edge (2,0,6)-(2,0,8) is moved across the triangle (2,0,6), (2,0,8), (3,0,8): the curve now ends
+// at (3,0,8), on the box edge between the top (which it crosses) and the side x = 3 (which runs along it).
+// Its new last edge is 27 degrees off the axis (no jog): the end in a boundary plane is the only defect.
+// With the boundary normals (faces with a boundary edge editable when the boundary valences stay), the
+// repair slides the end back onto the top: the straight curve, the matchings as they were.
+TEST(Meshability, CurveEndSlidOffABoxEdgeOntoTheFaceItCrosses)
+{
+  const Mesh m = kuhn_box();
+  const std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra(), Eigen::Matrix3d::Identity());
+  const auto points = points_of(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  add_strip(m, matchings, 2, 3, 1);
+  const std::vector<int> straight = matchings.face_matching;
+  auto vertex_at = [&](double x, double y, double z) {
+    for(Index v = 0; v < m.number_of_vertices(); ++v)
+      if(points[v].isApprox(Eigen::Vector3d(x, y, z))) return v;
+    return Mesh::null_index;
+  };
+  const Index a = vertex_at(2, 0, 6), b = vertex_at(2, 0, 8), c = vertex_at(3, 0, 8);
+  const Index e = m.find_edge(a, b);
+  ASSERT_NE(e, Mesh::null_index);
+  Index face = Mesh::null_index;
+  for(Index f : m.edge_ring_faces(e)) {
+    const auto& fv = m.face_vertices(f);
+    if(std::find(fv.begin(), fv.end(), c) != fv.end()) face = f;
+  }
+  ASSERT_NE(face, Mesh::null_index);
+  for(int g = 0; g < 24; ++g) {
+    matchings.face_matching[face] = g;
+    if(HR::internal::edge_holonomy(m, matchings.face_matching, e) == 0) break;
+  }
+  ASSERT_NE(matchings.face_matching[face], straight[face]);
+  const auto moved = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(moved.defects(), 0u); // no jog: (2,0,6)-(3,0,8) is within 45 degrees of z
+  bool ends_at_c = false;
+  for(const auto& s : moved.singular) ends_at_c = ends_at_c || s.vertices[0] == c || s.vertices[1] == c;
+  EXPECT_TRUE(ends_at_c);
+  bool transverse = false;
+  for(const Eigen::Vector3d& n : boundary_normals_at(m, c)) transverse = transverse || std::abs(n.z()) < std::sqrt(0.5);
+  EXPECT_TRUE(transverse); // the side x = 3 at the end
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  EXPECT_EQ(check.count(HR::Meshability_reason::END_IN_BOUNDARY_PLANE), 1u);
+  EXPECT_EQ(check.graph_defects(), 1u);
+
+  const auto r = HR::repair_singularity_graph(m, frames, matchings, HR::boundary_triangle_unit_normals(m));
+  EXPECT_EQ(r.defects_before[std::size_t(HR::Meshability_reason::END_IN_BOUNDARY_PLANE)], 1u);
+  EXPECT_EQ(r.defects_after[std::size_t(HR::Meshability_reason::END_IN_BOUNDARY_PLANE)], 0u);
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(repaired.defects(), 0u);
+  for(const auto& s : repaired.singular)
+    for(std::size_t v : s.vertices) EXPECT_TRUE(points[v].x() == 2 && points[v].y() == 0);
+  EXPECT_TRUE(matchings.face_matching == straight);
 }
 
 TEST(Meshability, SingularitiesFileCarriesTheReasonPerEdge)

@@ -48,21 +48,29 @@ enum class Meshability_reason {
   /// of the feature do not fit its valence).
   FEATURE_SECTOR,
   /// An interior face where the closest matching of the frames differs from the kept matching.
-  DISAGREEING_FACE
+  DISAGREEING_FACE,
+  /// A boundary vertex where a singular curve ends (or touches the boundary) on a boundary triangle
+  /// that runs alongside the curve: the frame axis closest to the triangle's normal is not the curve's
+  /// holonomy axis. The map puts the triangle on an integer plane and the curve on an integer line
+  /// sharing that coordinate, so the whole curve lies in the patch's plane and every tetrahedron
+  /// between them is flat in every map. A curve ends on faces it crosses (a curve ending on a feature
+  /// curve next to a patch parallel to it, or bending into the boundary with a jog).
+  END_IN_BOUNDARY_PLANE
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Number of values of `Meshability_reason`.
-constexpr std::size_t number_of_meshability_reasons = 8;
+constexpr std::size_t number_of_meshability_reasons = 9;
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// The name of a reason in reports (`"improper_edge"`, `"jog"`, `"dangling_end"`, `"zipper"`,
-/// `"invalid_node"`, `"boundary_contact"`, `"feature_sector"`, `"disagreeing_face"`).
+/// `"invalid_node"`, `"boundary_contact"`, `"feature_sector"`, `"disagreeing_face"`,
+/// `"end_in_boundary_plane"`).
 inline const char* meshability_reason_name(Meshability_reason reason)
 {
   static const char* names[number_of_meshability_reasons] = {"improper_edge", "jog", "dangling_end", "zipper",
                                                               "invalid_node", "boundary_contact", "feature_sector",
-                                                              "disagreeing_face"};
+                                                              "disagreeing_face", "end_in_boundary_plane"};
   return names[std::size_t(reason)];
 }
 
@@ -87,7 +95,8 @@ inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_me
 {
   return c[std::size_t(Meshability_reason::IMPROPER_EDGE)] + c[std::size_t(Meshability_reason::JOG)] +
          c[std::size_t(Meshability_reason::DANGLING_END)] + c[std::size_t(Meshability_reason::ZIPPER)] +
-         c[std::size_t(Meshability_reason::INVALID_NODE)] + c[std::size_t(Meshability_reason::BOUNDARY_CONTACT)];
+         c[std::size_t(Meshability_reason::INVALID_NODE)] + c[std::size_t(Meshability_reason::BOUNDARY_CONTACT)] +
+         c[std::size_t(Meshability_reason::END_IN_BOUNDARY_PLANE)];
 }
 
 } // namespace internal
@@ -170,9 +179,11 @@ Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mes
   };
   const std::size_t ne = mesh.number_of_edges();
   r.edge_class.assign(ne, -1);
+  std::vector<int> holonomy(ne, Octahedral_group::identity_index);
   for(Index e = 0; e < ne; ++e) {
     if(mesh.is_boundary_edge(e)) continue;
-    r.edge_class[e] = classify_edge(mesh, frames, e, edge_holonomy(mesh, matchings.face_matching, e));
+    holonomy[e] = edge_holonomy(mesh, matchings.face_matching, e);
+    r.edge_class[e] = classify_edge(mesh, frames, e, holonomy[e]);
     const auto& ev = mesh.edge_vertices(e);
     if(r.edge_class[e] == IMPROPER_CLASS) add(Meshability_reason::IMPROPER_EDGE, e, 0.5 * (point(ev[0]) + point(ev[1])));
     else if(r.edge_class[e] == JOG_CLASS) add(Meshability_reason::JOG, e, 0.5 * (point(ev[0]) + point(ev[1])));
@@ -188,6 +199,8 @@ Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mes
     if(s.kind != Vertex_singularity::NONE) add(Meshability_reason(int(s.kind)), v, point(v));
     else if(achieved != nullptr && mesh.is_boundary_vertex(v) && !is_meshable_boundary_corner(mesh, r.edge_class, *achieved, v))
       add(Meshability_reason::INVALID_NODE, v, point(v));
+    else if(ends_in_boundary_plane(mesh, frames, r.edge_class, holonomy, v))
+      add(Meshability_reason::END_IN_BOUNDARY_PLANE, v, point(v));
   }
   for(Index f = 0; faces && f < mesh.number_of_faces(); ++f) {
     if(mesh.is_boundary_face(f)) continue;
@@ -205,7 +218,8 @@ Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mes
 /// Checks that a frame field with its kept matchings is locally hex-meshable: every interior edge's
 /// holonomy (the product of the kept matchings around it) is the identity or a quarter turn about an
 /// axis within 45 degrees of the edge; no singular curve ends inside the volume, turns from valence 3
-/// into valence 5, or touches the boundary without ending there; nodes pass the link condition of
+/// into valence 5, touches the boundary without ending there, or ends on a boundary triangle that runs
+/// alongside it (`Meshability_reason::END_IN_BOUNDARY_PLANE`); nodes pass the link condition of
 /// `Meshability_reason::INVALID_NODE`; boundary edges get their prescribed valence; frames agree
 /// with the kept matchings. The check reads the matchings, not `compute_singularity_graph()`'s
 /// flags (which tolerate edges up to 75.5 degrees off their axis).

@@ -14,6 +14,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/move_singular_edge.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/simplify_at_hex_scale.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_curve_end.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_jog.h>
 
 #include <Eigen/Dense>
@@ -113,6 +114,7 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
   operations.emplace_back(new Remove_zigzag<Mesh>());
   operations.emplace_back(new Local_matching_search<Mesh>());
   operations.emplace_back(new Slide_jog<Mesh>());
+  operations.emplace_back(new Slide_curve_end<Mesh>());
   return operations;
 }
 
@@ -124,11 +126,12 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
 /// check of `check_local_meshability()` (design notes `robust_pipeline.md` §1; Li et al. 2012;
 /// Liu, Bommes et al. 2023): the matching of one face at a time is changed, which moves the
 /// holonomy between the three edges of the face. Operations, tried at every defect (jog, improper
-/// edge, zipper, invalid node, boundary contact): a defective edge moved across a triangle of its
+/// edge, zipper, invalid node, boundary contact, curve end in a boundary plane): a defective edge moved across a triangle of its
 /// ring (`"move_singular_edge"`), two singular edges of one triangle replaced by the third or
 /// cancelled (`"remove_zigzag"`), any other matching of a face around the defect
 /// (`"matching_search"`), a jog slid one vertex along its curve by two changes evaluated together
-/// (`"slide_jog"`). A change is kept only if it lowers a cost in which defects dominate
+/// (`"slide_jog"`), the end of a curve in a boundary plane slid by two triangles evaluated together
+/// (`"slide_end"`). A change is kept only if it lowers a cost in which defects dominate
 /// (improper edges, then jogs by their angle, then defective vertices) and the length of the
 /// singular curves breaks ties; so the repair never adds defects, and it stops at a local minimum.
 /// Every achieved boundary valence (the paper's guarantee) stays as it was: with the `directions`

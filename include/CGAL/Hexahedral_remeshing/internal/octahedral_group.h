@@ -178,6 +178,15 @@ private:
 
 inline const Octahedral_group& octahedral_group() { return Octahedral_group::instance(); }
 
+// Local axis of frame E (columns = axes) closest to the world direction d: the axis a boundary
+// triangle of normal d is aligned with, in the map and in the meshability check.
+inline int closest_local_axis(const Eigen::Matrix3d& E, const Eigen::Vector3d& d)
+{
+  int k;
+  (E.transpose() * d).cwiseAbs().maxCoeff(&k);
+  return k;
+}
+
 struct Octahedral_matching
 {
   int index;    // g in 0..23

@@ -19,14 +19,6 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// Local axis of the frame of t closest to the world direction d.
-inline int closest_local_axis(const Eigen::Matrix3d& E, const Eigen::Vector3d& d)
-{
-  int k;
-  (E.transpose() * d).cwiseAbs().maxCoeff(&k);
-  return k;
-}
-
 // Boundary faces on integer planes: in the tetrahedron of each boundary triangle, the coordinate of
 // the local axis along the normal is one integer for the three corners of the triangle. Feature
 // curves (boundary edges of valence != 2) follow: two faces with different normal axes meet on an

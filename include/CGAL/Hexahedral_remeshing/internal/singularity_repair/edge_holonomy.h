@@ -141,6 +141,38 @@ Vertex_singularity vertex_singularity(const Mesh& mesh, const std::vector<signed
   return s;
 }
 
+// Whether a singular curve ends at (or touches) boundary vertex v along a boundary triangle it runs
+// alongside: the map puts the three corners of every boundary triangle on an integer plane across the
+// frame axis closest to its normal (integer_tags.h) and every quarter-turn edge on an integer line along
+// its holonomy axis. At a vertex where both hold, a plane whose axis is not the curve's fixes one of the
+// curve's two line coordinates: the whole curve lies in the plane, and every tetrahedron between the
+// curve and that patch is flat in every map. A curve must end on faces it crosses (their axis is the
+// curve's). `holonomy`: per interior edge, its holonomy (edge_holonomy()); edges of class 3, 5 and jogs
+// count (a jog still has a quarter-turn axis); the frame axes are compared in world coordinates, where
+// the frames around a curve turn about its axis only.
+template <class Mesh>
+bool ends_in_boundary_plane(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, const std::vector<signed char>& edge_class,
+                            const std::vector<int>& holonomy, typename Mesh::Index v)
+{
+  if(!mesh.is_boundary_vertex(v)) return false;
+  const double limit = std::sqrt(0.5);
+  for(auto e : mesh.vertex_edges(v)) {
+    const signed char c = edge_class[e];
+    if(c != 3 && c != 5 && c != JOG_CLASS) continue;
+    const Eigen::Vector3d axis = (frames[mesh.edge_ring(e)[0]] * octahedral_group().axis(holonomy[e])).normalized();
+    for(auto b_edge : mesh.vertex_edges(v)) {
+      if(!mesh.is_boundary_edge(b_edge)) continue;
+      for(auto b : mesh.edge_boundary_triangles(b_edge)) {
+        const auto n = mesh.boundary_triangle_normal(b);
+        const Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+        const Eigen::Matrix3d& E = frames[mesh.boundary_triangle_tetrahedron(b)];
+        if(std::abs(E.col(closest_local_axis(E, normal)).normalized().dot(axis)) < limit) return true;
+      }
+    }
+  }
+  return false;
+}
+
 } // namespace internal
 } // namespace Hexahedral_remeshing
 } // namespace CGAL

@@ -121,13 +121,21 @@ public:
     return m_directions != nullptr && m_mesh.is_boundary_vertex(v) && !is_meshable_boundary_corner(m_mesh, m_class, m_achieved, v);
   }
 
+  // A curve ending in a boundary plane (ends_in_boundary_plane()): its whole curve is flat against a
+  // patch in every map.
+  bool ends_in_boundary_plane(Index v) const
+  {
+    return internal::ends_in_boundary_plane(m_mesh, m_frames, m_class, m_holonomy, v);
+  }
   // A vertex where the curve turns from one lean to the other costs as a zipper: the map reports it
-  // as one (see edge_lean()); an invalid boundary corner as an invalid node.
+  // as one (see edge_lean()); an invalid boundary corner as an invalid node; a curve ending in a
+  // boundary plane as a boundary contact.
   double vertex_cost(Index v) const
   {
     const double c = vertex_cost(vertex_singularity(m_mesh, m_class, v));
     if(c != 0) return c;
-    return is_leaning_zipper(m_mesh, m_class, m_lean, v) || is_invalid_boundary_corner(v) ? 10 : 0;
+    if(is_leaning_zipper(m_mesh, m_class, m_lean, v) || is_invalid_boundary_corner(v)) return 10;
+    return ends_in_boundary_plane(v) ? 5 : 0;
   }
 
   // The change of the cost if face f had matching g (infinite if a boundary edge's valence changes).
@@ -159,14 +167,21 @@ public:
       after += edge_cost(edges[i], c[i], G[i]);
     }
     std::array<signed char, 3> saved, saved_lean;
+    std::array<int, 3> saved_holonomy;
     for(int i = 0; i < 3; ++i) {
       saved[i] = m_class[edges[i]];
       saved_lean[i] = m_lean[edges[i]];
+      saved_holonomy[i] = m_holonomy[edges[i]];
       m_class[edges[i]] = c[i];
       m_lean[edges[i]] = c[i] < 0 ? 0 : lean(edges[i], G[i], c[i]);
+      if(c[i] >= 0) m_holonomy[edges[i]] = G[i];
     }
     for(Index v : fv) after += vertex_cost(v);
-    for(int i = 0; i < 3; ++i) { m_class[edges[i]] = saved[i]; m_lean[edges[i]] = saved_lean[i]; }
+    for(int i = 0; i < 3; ++i) {
+      m_class[edges[i]] = saved[i];
+      m_lean[edges[i]] = saved_lean[i];
+      m_holonomy[edges[i]] = saved_holonomy[i];
+    }
     m_matching[f] = old;
     return keeps_valences ? after - before : std::numeric_limits<double>::infinity();
   }
