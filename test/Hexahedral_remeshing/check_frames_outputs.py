@@ -147,8 +147,17 @@ def singularities(path, json_path):
         return
     i += 1 + nlines
     check(lines[i].split() == ['CELL_DATA', str(nlines)], path + ': CELL_DATA')
-    arrays, _ = read_arrays(lines, i + 1, nlines)
+    arrays, i = read_arrays(lines, i + 1, nlines)
     check(all(k in arrays for k in ('valence', 'curve', 'reason')), path + ': cell arrays valence, curve, reason')
+    # the failing vertices, one reason each, as many as the final check counts
+    check(lines[i].split() == ['POINT_DATA', str(npoints)], path + ': POINT_DATA')
+    points, _ = read_arrays(lines, i + 1, npoints)
+    check('reason' in points, path + ': point array reason')
+    vertex_reasons = {2: 'dangling_end', 3: 'zipper', 4: 'invalid_node', 5: 'boundary_contact', 8: 'end_in_boundary_plane'}
+    check(all(r == -1 or r in vertex_reasons for r in points['reason'][1]), path + ': vertex reason values')
+    for k, key in vertex_reasons.items():
+        n = sum(1 for r in points['reason'][1] if r == k)
+        check(n == final[key], path + ': %d vertices with reason %d, the check counts %d %s' % (n, k, final[key], key))
     valence, curve, reason = arrays['valence'][1], arrays['curve'][1], arrays['reason'][1]
     check(all(x in (0, 3, 5) for x in valence), path + ': valence values')
     check(all(0 <= x < s['curves'] for x in curve) and len(set(curve)) == s['curves'], path + ': curve ids')
