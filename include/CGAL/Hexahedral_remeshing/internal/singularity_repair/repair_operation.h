@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -59,6 +60,28 @@ inline void all_other_matchings(std::uint32_t f, int current, std::vector<Face_c
 {
   for(int g = 0; g < Octahedral_group::size; ++g)
     if(g != current) out.push_back({f, g, 0.});
+}
+
+// The change `c` followed by the best of the changes `propose_second(state, proposals)` makes with c
+// applied, of a face other than c's: two changes evaluated together, for a step whose first half alone
+// raises the cost (a jog or a curve's end slid past a vertex). `matching` is -1 if there is no second.
+template <class Mesh, class ProposeSecond>
+Face_change with_best_second_change(Singularity_repair_state<Mesh>& state, const Face_change& c, const ProposeSecond& propose_second)
+{
+  const int old = state.matching(c.face);
+  state.apply(c.face, c.matching);
+  std::vector<Face_change> second;
+  propose_second(state, second);
+  Face_change best;
+  best.delta = std::numeric_limits<double>::infinity();
+  for(const Face_change& d : second) {
+    if(d.face == c.face) continue;
+    const double delta = state.evaluate(d.face, d.matching);
+    if(delta < best.delta) { best = d; best.delta = delta; }
+  }
+  state.apply(c.face, old);
+  if(best.matching < 0) return Face_change{};
+  return {c.face, c.matching, 0., std::int64_t(best.face), best.matching};
 }
 
 } // namespace internal

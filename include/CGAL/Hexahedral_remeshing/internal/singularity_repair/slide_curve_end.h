@@ -15,7 +15,6 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/move_singular_edge.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/repair_operation.h>
 
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -31,25 +30,16 @@ public:
   void propose(Singularity_repair_state<Mesh>& state, const Repair_site& site, std::vector<Face_change>& out) const override
   {
     if(site.is_edge || !state.ends_in_boundary_plane(typename Mesh::Index(site.index))) return;
-    std::vector<Face_change> first, second;
+    std::vector<Face_change> first;
     for(auto e : singular_edges_at(state, typename Mesh::Index(site.index))) {
       first.clear();
       m_move.propose(state, Repair_site{true, std::uint32_t(e)}, first);
       for(const Face_change& c : first) {
-        const int old = state.matching(c.face);
-        state.apply(c.face, c.matching);
-        second.clear();
-        for(auto e2 : state.face_edges(c.face))
-          if(is_singular_class(state.edge_class(e2))) m_move.propose(state, Repair_site{true, std::uint32_t(e2)}, second);
-        Face_change best;
-        best.delta = std::numeric_limits<double>::infinity();
-        for(const Face_change& d : second) {
-          if(d.face == c.face) continue;
-          const double delta = state.evaluate(d.face, d.matching);
-          if(delta < best.delta) { best = d; best.delta = delta; }
-        }
-        state.apply(c.face, old);
-        if(best.matching >= 0) out.push_back({c.face, c.matching, 0., std::int64_t(best.face), best.matching});
+        const Face_change pair = with_best_second_change(state, c, [&](Singularity_repair_state<Mesh>& s, std::vector<Face_change>& second) {
+          for(auto e2 : s.face_edges(c.face))
+            if(is_singular_class(s.edge_class(e2))) m_move.propose(s, Repair_site{true, std::uint32_t(e2)}, second);
+        });
+        if(pair.matching >= 0) out.push_back(pair);
       }
     }
   }

@@ -14,8 +14,6 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/move_singular_edge.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
 
-#include <limits>
-
 namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
@@ -30,25 +28,16 @@ public:
   void propose(Singularity_repair_state<Mesh>& state, const Repair_site& site, std::vector<Face_change>& out) const override
   {
     if(!site.is_edge) return;
-    std::vector<Face_change> first, second;
+    std::vector<Face_change> first;
     m_move.propose(state, site, first);
     for(const Face_change& c : first) {
-      const int old = state.matching(c.face);
-      state.apply(c.face, c.matching);
-      second.clear();
-      for(auto v : state.mesh().face_vertices(c.face)) m_zigzag.propose(state, Repair_site{false, std::uint32_t(v)}, second);
-      for(auto e : state.face_edges(c.face))
-        if(state.edge_class(e) == JOG_CLASS || state.edge_class(e) == IMPROPER_CLASS)
-          m_move.propose(state, Repair_site{true, std::uint32_t(e)}, second);
-      Face_change best;
-      best.delta = std::numeric_limits<double>::infinity();
-      for(const Face_change& d : second) {
-        if(d.face == c.face) continue;
-        const double delta = state.evaluate(d.face, d.matching);
-        if(delta < best.delta) { best = d; best.delta = delta; }
-      }
-      state.apply(c.face, old);
-      if(best.matching >= 0) out.push_back({c.face, c.matching, 0., std::int64_t(best.face), best.matching});
+      const Face_change pair = with_best_second_change(state, c, [&](Singularity_repair_state<Mesh>& s, std::vector<Face_change>& second) {
+        for(auto v : s.mesh().face_vertices(c.face)) m_zigzag.propose(s, Repair_site{false, std::uint32_t(v)}, second);
+        for(auto e : s.face_edges(c.face))
+          if(s.edge_class(e) == JOG_CLASS || s.edge_class(e) == IMPROPER_CLASS)
+            m_move.propose(s, Repair_site{true, std::uint32_t(e)}, second);
+      });
+      if(pair.matching >= 0) out.push_back(pair);
     }
   }
 
