@@ -2,7 +2,8 @@
 // the independent evaluation of the holonomies of independent_holonomy.h (not the package's flags):
 // a field with one straight valence-3 axis (meshable, left bitwise unchanged), the same field with a
 // zigzag (repaired back to the straight axis), a small closed loop with a zipper (removed), a close pair of
-// valence-3 and valence-5 curves (removed at the hex scale), and every model of
+// valence-3 and valence-5 curves (removed at the hex scale), a curve bent into a side face and one whose end
+// was moved onto a box edge (ends in a boundary plane: reported; the second slid back), and every model of
 // ../shared/data (never worse).
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
