@@ -3,8 +3,10 @@
 // a field with one straight valence-3 axis (meshable, left bitwise unchanged), the same field with a
 // zigzag (repaired back to the straight axis), a small closed loop with a zipper (removed), a close pair of
 // valence-3 and valence-5 curves (removed at the hex scale), a curve bent into a side face and one whose end
-// was moved onto a box edge (ends in a boundary plane: reported; the second slid back), and every model of
-// ../shared/data (never worse).
+// was moved onto a box edge (ends in a boundary plane: reported; the second slid back), a curve touching a
+// side (taken off it), frames that end a curve inside (no dangling end: the matchings continue it), the
+// valid node of a tetrahedron (kept) and the invalid eight-curve node of the cubed sphere (reported), and
+// every model of ../shared/data (never worse).
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
@@ -12,9 +14,11 @@
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
 #include <CGAL/Hexahedral_remeshing/local_meshability.h>
 #include <CGAL/Hexahedral_remeshing/repair_singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/tetrahedralize_surface.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/singular_vertex_relocation.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
@@ -72,8 +76,11 @@ independent::Field_verdict evaluate_matchings(const Mesh& m, const std::vector<E
 
 // A box [-3, 3]^2 x [0, 8] of 1 x 1 x 2 cells, each split into six tetrahedra around its diagonal
 // (0,0,0)-(1,1,2): the line x = y = 0 is a chain of four mesh edges, and no edge is 45 degrees off
-// the z axis (a jog would be a borderline case).
-Mesh kuhn_box()
+// the z axis (a jog would be a borderline case). With `mirrored_top`, the cells above z = 4 are those
+// below mirrored in that plane (their diagonals (1,1,-2): still conforming, the faces z = const keep
+// theirs), so that a curve of the plane y = 0 can reach the side x = 3 at z = 4 and leave it upwards
+// within 45 degrees of z.
+Mesh kuhn_box(bool mirrored_top = false)
 {
   HR::Tetrahedral_soup_3<Point> soup;
   const int n = 3, h = 4;
@@ -86,10 +93,13 @@ Mesh kuhn_box()
     for(int j = -n; j < n; ++j)
       for(int i = -n; i < n; ++i)
         for(const auto& p : paths) {
-          std::array<int, 3> c = {{i, j, k}};
+          const bool mirror = mirrored_top && 2 * k >= h;
+          std::array<int, 3> c = {{0, 0, 0}};
+          auto corner = [&]() { return id(i + c[0], j + c[1], k + (mirror ? 1 - c[2] : c[2])); };
           std::array<std::size_t, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s) { ++c[p[s]]; t[s + 1] = id(c[0], c[1], c[2]); }
+          t[0] = corner();
+          for(int s = 0; s < 3; ++s) { ++c[p[s]]; t[s + 1] = corner(); }
+          if(mirror) std::swap(t[0], t[1]); // the mirror turns the tetrahedron inside out
           soup.tetrahedra.push_back(t);
         }
   Mesh m;
@@ -260,7 +270,17 @@ int quarter_turn_about_z()
 // the lines x = x0 and x = x1 of that plane become singular curves from bottom to top; around the
 // strip's two sides the holonomies are opposite (a valence-3 curve beside a valence-5 one) when the
 // strip is interior. Below the top (z1 < 8), the segment z = z1 of the plane is singular too.
+template <class InSheet>
+void add_sheet(const Mesh& m, HR::Matchings& matchings, const InSheet& in_sheet, int power);
+
 void add_strip(const Mesh& m, HR::Matchings& matchings, double x0, double x1, int power, double z1 = 1e30)
+{
+  add_sheet(m, matchings, [&](double x, double z) { return x >= x0 && x <= x1 && z <= z1; }, power);
+}
+
+// The same for the faces of the plane y = 0 whose centroid (x, z) satisfies in_sheet(x, z).
+template <class InSheet>
+void add_sheet(const Mesh& m, HR::Matchings& matchings, const InSheet& in_sheet, int power)
 {
   const auto points = points_of(m);
   const HR::internal::Octahedral_group& group = HR::internal::octahedral_group();
@@ -271,7 +291,7 @@ void add_strip(const Mesh& m, HR::Matchings& matchings, double x0, double x1, in
     double x = 0, z = 0;
     bool in_plane = true;
     for(Index v : fv) { in_plane = in_plane && points[v].y() == 0; x += points[v].x() / 3; z += points[v].z() / 3; }
-    if(!in_plane || x < x0 || x > x1 || z > z1) continue;
+    if(!in_plane || !in_sheet(x, z)) continue;
     const auto& tv = m.tetrahedron_vertices(m.face_tetrahedra(f)[0]);
     double y0 = 0;
     for(Index v : tv) y0 += points[v].y();
@@ -495,6 +515,286 @@ TEST(Meshability, CurveEndSlidOffABoxEdgeOntoTheFaceItCrosses)
   for(const auto& s : repaired.singular)
     for(std::size_t v : s.vertices) EXPECT_TRUE(points[v].x() == 2 && points[v].y() == 0);
   EXPECT_TRUE(matchings.face_matching == straight);
+}
+
+namespace {
+
+// The boundary vertices among the vertices of the singular edges of v (boundary_normals_at: independent).
+std::set<std::size_t> boundary_vertices_of(const Mesh& m, const independent::Field_verdict& v)
+{
+  std::set<std::size_t> b;
+  for(const auto& e : v.singular)
+    for(std::size_t x : e.vertices)
+      if(!boundary_normals_at(m, Index(x)).empty()) b.insert(x);
+  return b;
+}
+
+std::set<int> kinds_of(const independent::Field_verdict& v)
+{
+  std::set<int> k;
+  for(const auto& e : v.singular) k.insert(e.kind);
+  return k;
+}
+
+// Interior vertices with three or more singular edges, all of valence 3 or 5 (independent verdict),
+// with whether a hex-mesh vertex can have them: its link is a triangulated sphere, sum (6 - k) = 12 over
+// its edges, so 12 - 3 n3 - n5 must be even and >= 0 (regular edges, 2 each, make up the rest).
+std::map<std::size_t, bool> nodes_of(const Mesh& m, const independent::Field_verdict& v)
+{
+  std::map<std::size_t, std::vector<int> > at;
+  for(const auto& e : v.singular)
+    for(std::size_t x : e.vertices) at[x].push_back(e.kind);
+  std::map<std::size_t, bool> nodes;
+  for(const auto& a : at) {
+    if(a.second.size() < 3 || !boundary_normals_at(m, Index(a.first)).empty()) continue;
+    int rest = 12;
+    bool proper = true;
+    for(int k : a.second) { rest -= 6 - k; proper = proper && (k == 3 || k == 5); }
+    if(proper) nodes[a.first] = rest >= 0 && rest % 2 == 0;
+  }
+  return nodes;
+}
+
+} // namespace
+
+// A singular curve that touches the side x = 3 of kuhn_box(true) and goes on: the quarter turns about z of
+// the faces of the plane y = 0 right of the path (2,0,0)-(2,0,2)-(3,0,4)-(2,0,6)-(2,0,8) (identity frames).
+// At (3,0,4) the curve meets the boundary with two edges of one valence, 27 degrees off z, and nothing
+// ends there (a boundary contact); the side runs along the curve there, so the map would also put the
+// curve in its plane. Checked independently: four singular edges, no jog, three boundary vertices (the
+// two ends and the contact). The check reports the contact; the repair with the boundary normals takes the
+// curve off the side: no defect, the same valence, and its only boundary vertices its ends on the bottom and top.
+TEST(Meshability, CurveTouchingASideTakenOffIt)
+{
+  const Mesh m = kuhn_box(true);
+  const std::vector<Eigen::Matrix3d> frames(m.number_of_tetrahedra(), Eigen::Matrix3d::Identity());
+  const auto points = points_of(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  auto path = [](double z) { return z < 2 ? 2. : z < 4 ? 2 + (z - 2) / 2 : z < 6 ? 3 - (z - 4) / 2 : 2.; };
+  add_sheet(m, matchings, [&](double x, double z) { return x > path(z); }, 1);
+  const auto touching = evaluate_matchings(m, frames, matchings);
+  ASSERT_EQ(touching.singular.size(), 4u);
+  EXPECT_EQ(touching.defects(), 0u);
+  ASSERT_EQ(kinds_of(touching).size(), 1u);
+  const std::set<std::size_t> at_boundary = boundary_vertices_of(m, touching);
+  ASSERT_EQ(at_boundary.size(), 3u);
+  std::size_t contact = 0;
+  for(std::size_t v : at_boundary)
+    if(points[v].isApprox(Eigen::Vector3d(3, 0, 4))) contact = v;
+  ASSERT_TRUE(points[contact].isApprox(Eigen::Vector3d(3, 0, 4)));
+
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  ASSERT_EQ(check.count(HR::Meshability_reason::BOUNDARY_CONTACT), 1u);
+  for(const auto& v : check.violations)
+    if(v.reason == HR::Meshability_reason::BOUNDARY_CONTACT) EXPECT_EQ(std::size_t(v.index), contact);
+  EXPECT_EQ(check.count(HR::Meshability_reason::JOG), 0u);
+
+  const auto r = HR::repair_singularity_graph(m, frames, matchings, HR::boundary_triangle_unit_normals(m));
+  EXPECT_EQ(r.defects_before[std::size_t(HR::Meshability_reason::BOUNDARY_CONTACT)], 1u);
+  EXPECT_EQ(r.defects_after[std::size_t(HR::Meshability_reason::BOUNDARY_CONTACT)], 0u);
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(repaired.defects(), 0u);
+  EXPECT_TRUE(kinds_of(repaired) == kinds_of(touching));
+  const std::set<std::size_t> ends = boundary_vertices_of(m, repaired);
+  EXPECT_EQ(ends.size(), 2u);
+  for(std::size_t v : ends) EXPECT_TRUE(points[v].z() == 0 || points[v].z() == 8) << points[v].transpose();
+  std::printf("touching curve: %zu singular edges -> %zu, %zu faces changed\n", touching.singular.size(),
+              repaired.singular.size(), r.changed_faces);
+}
+
+// Frames that end a curve inside: the axis field below z = 4, the identity above. With face matchings a
+// curve cannot end at an interior vertex (the holonomies of the singular edges at a vertex, around the
+// punctures of its link sphere, multiply to the identity: one alone is the identity): the closest matchings
+// continue the curve along the branch cut of the frames' angle to the side x = -3, through jogs. Neither the
+// independent evaluation nor the check finds a dangling end, before or after the repair, and the repair
+// does not add a defect.
+TEST(Meshability, FramesEndingACurveInsideGiveNoDanglingEnd)
+{
+  const Mesh m = kuhn_box();
+  std::vector<Eigen::Matrix3d> frames = axis_field(m);
+  const auto points = points_of(m);
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    double z = 0;
+    for(Index v : m.tetrahedron_vertices(t)) z += points[v].z() / 4;
+    if(z > 4) frames[t] = Eigen::Matrix3d::Identity();
+  }
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const auto ending = evaluate_matchings(m, frames, matchings);
+  const auto alone = independent::evaluate_frames(points, tets_of(m), frames);
+  EXPECT_EQ(ending.dangling, 0u);
+  EXPECT_EQ(alone.dangling, 0u);
+  EXPECT_GE(ending.jogs, 1u); // the continuation
+  bool above = false;
+  for(const auto& e : ending.singular) above = above || points[e.vertices[0]].z() > 4 || points[e.vertices[1]].z() > 4;
+  EXPECT_FALSE(above);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  EXPECT_EQ(check.count(HR::Meshability_reason::DANGLING_END), 0u);
+  EXPECT_EQ(check.count(HR::Meshability_reason::JOG), ending.jogs);
+  const auto r = HR::repair_singularity_graph(m, frames, matchings, HR::boundary_triangle_unit_normals(m));
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(repaired.dangling, 0u);
+  EXPECT_EQ(r.defects_after[std::size_t(HR::Meshability_reason::DANGLING_END)], 0u);
+  EXPECT_LE(repaired.defects(), ending.defects());
+  std::printf("curve ended by the frames: %zu singular edges (%zu jogs) -> %zu (%zu jogs), %zu faces changed\n",
+              ending.singular.size(), ending.jogs, repaired.singular.size(), repaired.jogs, r.changed_faces);
+}
+
+namespace {
+
+// A regular tetrahedron of volume 8/3, tetrahedralized by TetGen into tetrahedra of volume at most
+// 8/3 / `cells`.
+Mesh regular_tetrahedron(double cells)
+{
+  CGAL::Surface_mesh<Point> sm;
+  const Point c[4] = {Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)};
+  std::vector<CGAL::Surface_mesh<Point>::Vertex_index> v;
+  for(const Point& p : c) v.push_back(sm.add_vertex(p));
+  sm.add_face(v[0], v[1], v[2]);
+  sm.add_face(v[0], v[3], v[1]);
+  sm.add_face(v[0], v[2], v[3]);
+  sm.add_face(v[1], v[3], v[2]);
+  HR::Tetrahedral_soup_3<Point> soup;
+  HR::tetrahedralize_surface(sm, soup, HR::parameters::maximum_tetrahedron_volume((8. / 3) / cells));
+  Mesh m;
+  HR::build_tetrahedral_mesh(soup, m, HR::parameters::split_boundary_chords(true));
+  return m;
+}
+
+// The valence-3 edges at the only node of v, which must be valid: 0 if there is no such node.
+std::size_t valence3_at_the_valid_node(const Mesh& m, const independent::Field_verdict& v)
+{
+  const std::map<std::size_t, bool> nodes = nodes_of(m, v);
+  if(nodes.size() != 1 || !nodes.begin()->second) return 0;
+  std::size_t k3 = 0;
+  for(const auto& e : v.singular)
+    if(e.vertices[0] == nodes.begin()->first || e.vertices[1] == nodes.begin()->first) k3 += (e.kind == 3);
+  return k3;
+}
+
+} // namespace
+
+// A regular tetrahedron (TetGen): its smooth field has four valence-3 curves from one interior vertex to
+// the four faces, the node of a tetrahedron split into four hexahedra (sum (6 - k) = 4 x 3 = 12: valid).
+// Checked independently from the kept matchings. At 200 cells the field has no defect: the check reports
+// nothing and the repair keeps the field bitwise. At 1,500 the curves have jogs and an improper edge: the
+// repair straightens them and keeps the node, valid, with its four valence-3 edges.
+TEST(Meshability, ValidNodeOfATetrahedronKept)
+{
+  const Mesh m = regular_tetrahedron(200);
+  const auto f = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(false));
+  const auto verdict = evaluate_matchings(m, f.frames, f.matchings);
+  EXPECT_EQ(verdict.defects(), 0u);
+  EXPECT_EQ(valence3_at_the_valid_node(m, verdict), 4u);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, f.frames, f.matchings);
+  EXPECT_EQ(check.count(HR::Meshability_reason::INVALID_NODE), 0u);
+  EXPECT_EQ(check.graph_defects(), 0u);
+  HR::Matchings matchings = f.matchings;
+  const auto r = HR::repair_singularity_graph(m, f.frames, matchings, HR::boundary_triangle_unit_normals(m));
+  EXPECT_EQ(r.changed_faces, 0u);
+  EXPECT_TRUE(matchings.face_matching == f.matchings.face_matching);
+
+  const Mesh fine = regular_tetrahedron(1500);
+  const auto g = HR::compute_frame_field_pipeline(fine, HR::parameters::singularity_repair(false));
+  const auto jagged = evaluate_matchings(fine, g.frames, g.matchings);
+  EXPECT_GE(jagged.defects(), 1u);
+  HR::Matchings repaired_matchings = g.matchings;
+  const auto rf = HR::repair_singularity_graph(fine, g.frames, repaired_matchings, HR::boundary_triangle_unit_normals(fine));
+  const auto repaired = evaluate_matchings(fine, g.frames, repaired_matchings);
+  EXPECT_EQ(repaired.defects(), 0u);
+  EXPECT_EQ(valence3_at_the_valid_node(fine, repaired), 4u);
+  EXPECT_EQ(HR::check_local_meshability(fine, g.frames, repaired_matchings).graph_defects(), 0u);
+  std::printf("tetrahedron: %zu tets, %zu singular edges, no change; %zu tets, %zu singular edges (%zu defects) -> %zu "
+              "(%zu defects), %zu faces changed, node kept\n", m.number_of_tetrahedra(), verdict.singular.size(),
+              fine.number_of_tetrahedra(), jagged.singular.size(), jagged.defects(), repaired.singular.size(),
+              repaired.defects(), rf.changed_faces);
+}
+
+namespace {
+
+// The cube [-3,3]^3 of unit cells, each split into six tetrahedra around its diagonal pointing away from the
+// centre (the Kuhn cells mirrored in each octant: conforming, the faces x = const keep their diagonals
+// under a mirror in x): the eight rays from the centre to the corners are chains of mesh edges.
+Mesh octant_kuhn_cube()
+{
+  HR::Tetrahedral_soup_3<Point> soup;
+  const int n = 3;
+  auto id = [&](int i, int j, int k) { return std::size_t(((k + n) * (2 * n + 1) + (j + n)) * (2 * n + 1) + (i + n)); };
+  for(int k = -n; k <= n; ++k)
+    for(int j = -n; j <= n; ++j)
+      for(int i = -n; i <= n; ++i) soup.points.emplace_back(i, j, k);
+  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for(int k = -n; k < n; ++k)
+    for(int j = -n; j < n; ++j)
+      for(int i = -n; i < n; ++i)
+        for(const auto& p : paths) {
+          const std::array<int, 3> lo = {{i, j, k}};
+          std::array<bool, 3> mirror;
+          for(int a = 0; a < 3; ++a) mirror[std::size_t(a)] = lo[std::size_t(a)] < 0;
+          std::array<int, 3> c = {{0, 0, 0}};
+          auto corner = [&]() {
+            std::array<int, 3> q;
+            for(int a = 0; a < 3; ++a) q[std::size_t(a)] = lo[std::size_t(a)] + (mirror[std::size_t(a)] ? 1 - c[std::size_t(a)] : c[std::size_t(a)]);
+            return id(q[0], q[1], q[2]);
+          };
+          std::array<std::size_t, 4> t;
+          t[0] = corner();
+          for(int s = 0; s < 3; ++s) { ++c[std::size_t(p[s])]; t[std::size_t(s + 1)] = corner(); }
+          if((int(mirror[0]) + int(mirror[1]) + int(mirror[2])) % 2 == 1) std::swap(t[0], t[1]);
+          soup.tetrahedra.push_back(t);
+        }
+  Mesh m;
+  HR::build_tetrahedral_mesh(soup, m);
+  return m;
+}
+
+} // namespace
+
+// Eight valence-3 curves meeting at one vertex: the frames of the cubed sphere (in the pyramid of the cube
+// over each face, the rotation taking the face's normal to the direction from the centre) on
+// octant_kuhn_cube(). No hex-mesh vertex has eight valence-3 edges (3 x 8 > 12): checked independently from
+// the kept matchings, and reported by the check as an invalid node at the centre. The repair does not
+// make the field worse.
+TEST(Meshability, InvalidNodeOfTheCubedSphereReported)
+{
+  const Mesh m = octant_kuhn_cube();
+  const auto points = points_of(m);
+  std::vector<Eigen::Matrix3d> frames;
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(Index v : m.tetrahedron_vertices(t)) c += points[v] / 4;
+    Eigen::Index a = 0;
+    c.cwiseAbs().maxCoeff(&a);
+    const Eigen::Vector3d normal = Eigen::Vector3d::Unit(a) * (c[a] > 0 ? 1 : -1);
+    frames.push_back(Eigen::Quaterniond::FromTwoVectors(normal, c.normalized()).toRotationMatrix());
+  }
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const auto verdict = evaluate_matchings(m, frames, matchings);
+  const std::map<std::size_t, bool> nodes = nodes_of(m, verdict);
+  std::size_t centre = 0;
+  for(Index v = 0; v < m.number_of_vertices(); ++v)
+    if(points[v].norm() == 0) centre = v;
+  ASSERT_EQ(nodes.count(centre), 1u);
+  EXPECT_FALSE(nodes.at(centre));
+  std::size_t at_centre = 0;
+  for(const auto& e : verdict.singular)
+    if(e.vertices[0] == centre || e.vertices[1] == centre) { ++at_centre; EXPECT_EQ(e.kind, 3); }
+  EXPECT_EQ(at_centre, 8u);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  std::size_t invalid = 0;
+  for(const auto& n : nodes) invalid += !n.second;
+  EXPECT_EQ(check.count(HR::Meshability_reason::INVALID_NODE), invalid);
+  bool centre_reported = false;
+  for(const auto& v : check.violations)
+    centre_reported = centre_reported || (v.reason == HR::Meshability_reason::INVALID_NODE && std::size_t(v.index) == centre);
+  EXPECT_TRUE(centre_reported);
+  const auto r = HR::repair_singularity_graph(m, frames, matchings, HR::boundary_triangle_unit_normals(m));
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  std::size_t invalid_after = 0;
+  for(const auto& n : nodes_of(m, repaired)) invalid_after += !n.second;
+  EXPECT_LE(repaired.defects() + invalid_after, verdict.defects() + invalid);
+  std::printf("cubed sphere: %zu singular edges (%zu defects, %zu invalid nodes) -> %zu (%zu defects, %zu invalid nodes), "
+              "%zu faces changed\n", verdict.singular.size(), verdict.defects(), invalid, repaired.singular.size(),
+              repaired.defects(), invalid_after, r.changed_faces);
 }
 
 TEST(Meshability, SingularitiesFileCarriesTheReasonPerEdge)
