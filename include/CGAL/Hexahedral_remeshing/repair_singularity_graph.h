@@ -15,6 +15,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/simplify_at_hex_scale.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_curve_end.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/sweep_curve.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_jog.h>
 
 #include <Eigen/Dense>
@@ -33,6 +34,7 @@ namespace internal_np {
 enum singularity_repair_t { singularity_repair };
 enum maximum_repair_steps_t { maximum_repair_steps };
 enum repair_hex_edge_length_t { repair_hex_edge_length };
+enum repair_sweeps_t { repair_sweeps };
 } // namespace internal_np
 
 namespace parameters {
@@ -46,10 +48,14 @@ template <class T> unspecified_type maximum_repair_steps(const T& value);
 /// Repair: the hex edge length of the map to come (model units, default `0`: no hex-scale
 /// simplification); `hexahedral_remeshing()` passes its own.
 template <class T> unspecified_type repair_hex_edge_length(const T& value);
+/// Repair: after the short changes, sweep the curves that no short change repairs (`"sweep_curve"`;
+/// `bool`, default `true`).
+template <class T> unspecified_type repair_sweeps(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(singularity_repair)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_repair_steps)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(repair_hex_edge_length)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(repair_sweeps)
 #endif
 } // namespace parameters
 
@@ -77,6 +83,11 @@ struct Singularity_repair_result
   /// every reason is listed, with 0 where the repair did not run.
   std::vector<std::pair<std::string, std::size_t> > hex_scale_kept = {
     {"too_large", 0}, {"collar_not_flat", 0}, {"not_editable", 0}, {"boundary_valence", 0}, {"not_cheaper", 0}};
+  /// Changes of `"sweep_curve"` (also in `operations`).
+  std::size_t swept_curves = 0;
+  /// In the pipeline: the repair with the sweeps was not kept, and the one without them was tried
+  /// (and kept if `accepted`).
+  bool without_sweeps = false;
   /// In the pipeline (`compute_frame_field_pipeline()`), which repairs the realigned field and
   /// re-optimizes its frames: true if the repaired field was kept (no worse with the kept matchings and
   /// from the frames alone, better in one), false if the field was left as the realignment made it.
@@ -131,7 +142,10 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
 /// cancelled (`"remove_zigzag"`), any other matching of a face around the defect
 /// (`"matching_search"`), a jog slid one vertex along its curve by two changes evaluated together
 /// (`"slide_jog"`), the end of a curve in a boundary plane slid by two triangles evaluated together
-/// (`"slide_end"`). A change is kept only if it lowers a cost in which defects dominate
+/// (`"slide_end"`); then, where none of these helps, a piece of a curve swept across a sheet of up to 16
+/// triangles, each edge move chosen as the cheapest next one and the cheapest prefix of three moves or
+/// more kept (`"sweep_curve"`, named parameter `repair_sweeps`: a curve bent into a side face). A change
+/// is kept only if it lowers a cost in which defects dominate
 /// (improper edges, then jogs by their angle, then defective vertices) and the length of the
 /// singular curves breaks ties; so the repair never adds defects, and it stops at a local minimum.
 /// Every achieved boundary valence (the paper's guarantee) stays as it was: with the `directions`
@@ -156,7 +170,7 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
 /// \param matchings the kept matchings, repaired in place
 /// \param directions empty, or one direction per boundary triangle: those the boundary frames follow
 ///        (the constraints `v` before the realignment, the normals after it)
-/// \param np optional named parameters: `maximum_repair_steps`, `repair_hex_edge_length`
+/// \param np optional named parameters: `maximum_repair_steps`, `repair_hex_edge_length`, `repair_sweeps`
 /// \returns the defects by reason before and after, the changes by operation, the seconds
 /// \throws Error if `frames` or `matchings` are not sized for `mesh`.
 template <class Traits, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -183,6 +197,16 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
     internal::Singularity_repair_state<Mesh> state(mesh, frames, matchings.face_matching, directions.empty() ? nullptr : &directions);
     std::vector<std::size_t> applied, again;
     internal::greedy_surgery(state, operations, max_steps, applied);
+    // the defects no short change repairs: with the sweeps too (proposed from the start, a sweep would
+    // take defects that the short changes repair better)
+    std::vector<std::size_t> swept(operations.size() + 1, 0);
+    if(choose_parameter(get_parameter(np, internal_np::repair_sweeps), true)) {
+      auto with_sweep = internal::singularity_repair_operations<Mesh>();
+      with_sweep.emplace_back(new internal::Sweep_curve<Mesh>());
+      internal::greedy_surgery(state, with_sweep, max_steps, swept);
+      for(std::size_t k = 0; k < applied.size(); ++k) applied[k] += swept[k];
+    }
+    r.swept_curves = swept.back();
     const internal::Hex_scale_simplification s = internal::simplify_at_hex_scale(state, hex_edge);
     r.hex_scale_clusters = s.clusters;
     r.simplified_clusters = s.removed;
@@ -192,6 +216,7 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
     if(r.simplified_clusters > 0) internal::greedy_surgery(state, operations, max_steps, again);
     for(std::size_t k = 0; k < operations.size(); ++k)
       r.operations.emplace_back(operations[k]->name(), applied[k] + (again.empty() ? 0 : again[k]));
+    r.operations.emplace_back("sweep_curve", r.swept_curves);
     r.operations.emplace_back("simplify_at_hex_scale", r.simplified_clusters);
   }
   for(std::size_t f = 0; f < input.size(); ++f) r.changed_faces += (input[f] != matchings.face_matching[f]);

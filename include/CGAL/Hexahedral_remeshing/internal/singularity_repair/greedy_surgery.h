@@ -81,8 +81,7 @@ std::size_t greedy_surgery(Singularity_repair_state<Mesh>& state,
     state.apply(best);
     ++applied[best_operation];
     ++changes;
-    queue_defects_around(state, best.face, queue);
-    if(best.second_face >= 0) queue_defects_around(state, Index(best.second_face), queue);
+    Singularity_repair_state<Mesh>::for_each_face(best, [&](Index f, int) { queue_defects_around(state, f, queue); });
   }
   return changes;
 }

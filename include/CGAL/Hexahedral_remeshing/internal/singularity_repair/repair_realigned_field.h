@@ -57,42 +57,77 @@ Local_meshability_report frame_check(const Tetrahedral_mesh_3<Traits>& mesh, con
   return check_local_meshability(mesh, frames, compute_matchings(mesh, frames));
 }
 
+// A repaired field and its verdict: kept if no worse than the realigned one with the kept matchings and
+// from the frames alone, better in one of them (or simpler at the hex scale), and the non-meshable
+// locations the map will report of it do not grow.
+struct Repair_attempt
+{
+  Singularity_repair_result report;
+  std::vector<Eigen::Matrix3d> frames;
+  Matchings matchings;
+  Singularity_graph graph;
+  std::size_t kept_graph = 0, alone_graph = 0;
+};
+
+template <class Traits, class NamedParameters, class RealignmentParameters>
+Repair_attempt attempt_repair(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
+                              const Matchings& matchings, const std::vector<int>& prescribed,
+                              const std::vector<Eigen::Vector3d>& normals, const Compared_defects& kept_before,
+                              const Compared_defects& alone_before, std::size_t map_before, const NamedParameters& np,
+                              const RealignmentParameters& realignment_np)
+{
+  Repair_attempt a;
+  a.matchings = matchings;
+  a.report = repair_singularity_graph(mesh, frames, a.matchings, normals, np);
+  a.report.accepted = false;
+  if(a.report.changed_faces == 0) return a;
+  a.frames = frames;
+  realign_frame_field(mesh, a.frames, a.matchings, normals, realignment_np);
+  const Compared_defects kept(check_local_meshability(mesh, a.frames, a.matchings, prescribed, normals).counts);
+  const Compared_defects alone(frame_check(mesh, a.frames).counts);
+  a.graph = compute_singularity_graph(mesh, a.frames, a.matchings);
+  a.kept_graph = kept.graph;
+  a.alone_graph = alone.graph;
+  a.report.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
+                      (kept.better_than(kept_before) || alone.better_than(alone_before) || a.report.simplified_clusters > 0) &&
+                      map_graph_defects(a.graph) <= map_before;
+  return a;
+}
+
 // `singularities`: replaced by the repaired field's graph if that is kept (left as it is otherwise: the
 // pipeline keeps an unchanged field's graph bitwise). `prescribed`: per edge, the prescribed valence of
 // the boundary edges: with it the kept matchings are compared with the whole check (the hexahedra at
 // the boundary vertices and the sectors at feature curves too).
-// `realignment_np`: the named parameters of the realignment (solver order, face weights).
+// `realignment_np`: the named parameters of the realignment (solver order, face weights). A repair with
+// sweeps that is not kept is tried again without them: a sweep may take the field where the frames,
+// re-optimized, disagree, and lose the short changes' gains with it (s05c, s11c, n06c).
 template <class Traits, class NamedParameters, class RealignmentParameters>
 Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
                                                  Matchings& matchings, Singularity_graph& singularities, const std::vector<int>& prescribed,
                                                  const NamedParameters& np, const RealignmentParameters& realignment_np)
 {
   const auto start = std::chrono::steady_clock::now();
-  Matchings repaired = matchings;
   const std::vector<Eigen::Vector3d> normals = boundary_triangle_unit_normals(mesh);
-  Singularity_repair_result r = repair_singularity_graph(mesh, frames, repaired, normals, np);
   // the surgery's own check of the realigned field with the kept matchings
   const Compared_defects kept_before(check_local_meshability(mesh, frames, matchings, prescribed, normals).counts);
   const Compared_defects alone_before(frame_check(mesh, frames).counts);
+  const std::size_t map_before = map_graph_defects(compute_singularity_graph(mesh, frames, matchings));
+  Repair_attempt a =
+    attempt_repair(mesh, frames, matchings, prescribed, normals, kept_before, alone_before, map_before, np, realignment_np);
+  const bool retry = !a.report.accepted && a.report.swept_curves > 0;
+  if(retry)
+    a = attempt_repair(mesh, frames, matchings, prescribed, normals, kept_before, alone_before, map_before,
+                       parameters::repair_sweeps(false, np), realignment_np);
+  Singularity_repair_result r = a.report;
+  r.without_sweeps = retry;
   r.graph_defects_before = r.graph_defects_after = kept_before.graph;
   r.frame_graph_defects_before = r.frame_graph_defects_after = alone_before.graph;
-  r.accepted = false;
-  if(r.changed_faces > 0) {
-    std::vector<Eigen::Matrix3d> reoptimized = frames;
-    realign_frame_field(mesh, reoptimized, repaired, normals, realignment_np);
-    const Compared_defects kept(check_local_meshability(mesh, reoptimized, repaired, prescribed, normals).counts);
-    const Compared_defects alone(frame_check(mesh, reoptimized).counts);
-    Singularity_graph graph = compute_singularity_graph(mesh, reoptimized, repaired);
-    r.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
-                 (kept.better_than(kept_before) || alone.better_than(alone_before) || r.simplified_clusters > 0) &&
-                 map_graph_defects(graph) <= map_graph_defects(compute_singularity_graph(mesh, frames, matchings));
-    if(r.accepted) {
-      frames.swap(reoptimized);
-      matchings = std::move(repaired);
-      singularities = std::move(graph);
-      r.graph_defects_after = kept.graph;
-      r.frame_graph_defects_after = alone.graph;
-    }
+  if(r.accepted) {
+    frames.swap(a.frames);
+    matchings = std::move(a.matchings);
+    singularities = std::move(a.graph);
+    r.graph_defects_after = a.kept_graph;
+    r.frame_graph_defects_after = a.alone_graph;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

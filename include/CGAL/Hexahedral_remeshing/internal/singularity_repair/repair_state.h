@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -26,7 +27,8 @@ namespace Hexahedral_remeshing {
 namespace internal {
 
 // A proposed change: face `face` gets matching `matching`, then (if `second_face` is not -1)
-// `second_face` gets `second_matching`; `delta` the change of the cost.
+// `second_face` gets `second_matching`, then each face of `more` its matching, in order; `delta` the
+// change of the cost.
 struct Face_change
 {
   std::uint32_t face = 0;
@@ -34,6 +36,7 @@ struct Face_change
   double delta = 0;
   std::int64_t second_face = -1;
   int second_matching = -1;
+  std::vector<std::pair<std::uint32_t, int> > more;
 };
 
 template <class Mesh>
@@ -186,22 +189,33 @@ public:
     return keeps_valences ? after - before : std::numeric_limits<double>::infinity();
   }
 
-  // The change of the cost of a change of one or two faces.
+  // The change of the cost of a change of one face or more, evaluated one after the other.
   double evaluate(const Face_change& c)
   {
-    if(c.second_face < 0) return evaluate(c.face, c.matching);
-    const int old = m_matching[c.face];
-    const double first = evaluate(c.face, c.matching);
-    apply(c.face, c.matching);
-    const double second = evaluate(Index(c.second_face), c.second_matching);
-    apply(c.face, old);
-    return first + second;
+    if(c.second_face < 0 && c.more.empty()) return evaluate(c.face, c.matching);
+    std::vector<std::pair<Index, int> > undo;
+    double delta = 0;
+    for_each_face(c, [&](Index f, int g) {
+      delta += evaluate(f, g);
+      undo.emplace_back(f, m_matching[f]);
+      apply(f, g);
+    });
+    for(auto u = undo.rbegin(); u != undo.rend(); ++u) apply(u->first, u->second);
+    return delta;
   }
 
   void apply(const Face_change& c)
   {
-    apply(c.face, c.matching);
-    if(c.second_face >= 0) apply(Index(c.second_face), c.second_matching);
+    for_each_face(c, [&](Index f, int g) { apply(f, g); });
+  }
+
+  // Calls fn(face, matching) for each face of c, in order.
+  template <class Fn>
+  static void for_each_face(const Face_change& c, const Fn& fn)
+  {
+    fn(Index(c.face), c.matching);
+    if(c.second_face >= 0) fn(Index(c.second_face), c.second_matching);
+    for(const auto& m : c.more) fn(Index(m.first), m.second);
   }
 
   void apply(Index f, int g)
