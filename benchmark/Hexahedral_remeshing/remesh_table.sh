@@ -41,7 +41,7 @@ defects = '%d>%d' % (graph(m['before_repair']), graph(m['final'])) if m else '-'
 repair_s = m.get('repair', {}).get('seconds', 0.) if m else 0.
 rep = m.get('repair', {}) if m else {}
 # kept / not kept (changed, no better) / no change / off; fallback: the mesh is the unrepaired field's
-repair = ('fallback' if r.get('repair_fallback') else 'kept' if rep.get('accepted') else
+repair = ('fallback' if r.get('repair_fallback') else 'no sweeps' if r.get('sweep_fallback') else 'kept' if rep.get('accepted') else
           'no change' if rep.get('performed') and rep.get('changed_faces', 0) == 0 else 'not kept' if rep.get('performed') else 'off')
 # hex-scale simplification: clusters of curves with no room at the hex size, removed/found
 hs = rep.get('hex_scale', {})

@@ -146,7 +146,12 @@ struct Hexahedral_remeshing_result
   /// the field without the repair gives a valid one: this result, hex mesh and `frame_field` are then
   /// those of the field without the repair (`frame_field.repaired` false).
   bool repair_fallback = false;
-  /// With `repair_fallback`: the status, failed stage and message of the run on the repaired field.
+  /// True if the hex mesh of the repaired field was not valid while the field repaired without the
+  /// sweeps (`repair_sweeps`) gives a valid one: this result, hex mesh and `frame_field` are then those
+  /// of the field repaired without the sweeps.
+  bool sweep_fallback = false;
+  /// With `repair_fallback` or `sweep_fallback`: the status, failed stage and message of the run on the
+  /// repaired field.
   std::string repaired_field_outcome;
   /// The run on the refined tetrahedral mesh, if any (`tetrahedron_refinement`).
   Tetrahedron_refinement_report refinement;

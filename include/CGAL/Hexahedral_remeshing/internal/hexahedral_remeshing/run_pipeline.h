@@ -316,25 +316,19 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   return r;
 }
 
-// The pipeline; where the repaired field (the default) gives no valid hex mesh but changed the field, the
-// field without the repair is tried too and kept if its hex mesh is valid. The repair's acceptance
-// compares the graph's defects, which do not decide alone whether the map folds where the extraction
-// and the smoothing cannot recover (the stepped shaft: the repair takes its jogs from 67 to 15 and its
-// flat tetrahedra from 105 to 0, yet 3 inverted ones leave 69 inverted hexahedra, where the 2 inverted
-// and 105 flat of the unrepaired map give a valid mesh): so the repair by default never costs a mesh.
-template <class Traits, class NamedParameters>
-Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& hexes,
-                                                     const NamedParameters& np)
+// The pipeline with the named parameters `np`, kept in place of `r` (with its hex mesh and map) if its hex
+// mesh is valid; `r`'s seconds are added to the result kept either way.
+template <class Traits, class NamedParameters, class OtherParameters>
+bool keep_if_valid(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& hexes, const NamedParameters& np,
+                   const OtherParameters& other_np, Hexahedral_remeshing_result& r)
 {
-  Hexahedral_remeshing_result r = run_pipeline_once(mesh, hexes, np);
-  if(r.status == Hexahedral_remeshing_status::OK || !r.frame_field.repaired || !r.frame_field.repair.accepted) return r;
   Hexahedral_mesh_3 other_hexes;
   Integer_grid_map other_map;
   Hexahedral_remeshing_result other =
-    run_pipeline_once(mesh, other_hexes, parameters::singularity_repair(false, parameters::integer_grid_map_output(std::ref(other_map), np)));
+    run_pipeline_once(mesh, other_hexes, parameters::integer_grid_map_output(std::ref(other_map), other_np));
   if(other.status != Hexahedral_remeshing_status::OK) {
     r.seconds += other.seconds;
-    return r;
+    return false;
   }
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter_reference;
@@ -342,10 +336,32 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
   Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
   map = std::move(other_map);
   hexes = std::move(other_hexes);
-  other.repair_fallback = true;
   other.repaired_field_outcome = std::string(status_name(r.status)) + " (failed at the " + r.failed_stage + " stage): " + r.message;
   other.seconds += r.seconds;
-  return other;
+  r = std::move(other);
+  return true;
+}
+
+// The pipeline; where the repaired field (the default) gives no valid hex mesh but changed the field, the
+// repair without the sweeps (if it swept curves) and then the field without the repair are tried too, and
+// the first with a valid hex mesh is kept. The repair's acceptance compares the graph's defects, which do
+// not decide alone whether the map folds where the extraction and the smoothing cannot recover (the
+// stepped shaft: the repair takes its jogs from 67 to 15 and its flat tetrahedra from 105 to 0, yet 3
+// inverted ones leave 69 inverted hexahedra, where the 2 inverted and 105 flat of the unrepaired map give
+// a valid mesh; the icosahedron n15c: valid with the short changes, not with the sweeps): so neither the
+// repair nor its sweeps by default ever cost a mesh.
+template <class Traits, class NamedParameters>
+Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& hexes,
+                                                     const NamedParameters& np)
+{
+  Hexahedral_remeshing_result r = run_pipeline_once(mesh, hexes, np);
+  if(r.status == Hexahedral_remeshing_status::OK || !r.frame_field.repaired || !r.frame_field.repair.accepted) return r;
+  if(r.frame_field.repair.swept_curves > 0 && keep_if_valid(mesh, hexes, np, parameters::repair_sweeps(false, np), r)) {
+    r.sweep_fallback = true;
+    return r;
+  }
+  if(keep_if_valid(mesh, hexes, np, parameters::singularity_repair(false, np), r)) r.repair_fallback = true;
+  return r;
 }
 
 } // namespace internal
