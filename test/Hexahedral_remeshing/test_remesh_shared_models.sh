@@ -6,7 +6,8 @@
 # s06c and s17c since the repair of the singularity graph runs by default; B1_tet since the extraction completes
 # the cells across its flat tetrahedra (choose_corners), n15c since it completes those across its folds;
 # n11c and s11c since a coarse mesh that fails is remeshed on its refinement (tetrahedron_refinement).
-# s07c since the repair slides a curve's end out of a boundary plane (slide_end).
+# s07c since the repair slides a curve's end out of a boundary plane (slide_end). n15c keeps its mesh since the
+# repair's sweeps through the sweep fallback (its field repaired with the sweeps gives none).
 # Skipped (exit 0 with a message) when ../shared/data is absent.
 #   test_remesh_shared_models.sh HEXMESH SOURCE_DIR SHARED_DATA_DIR
 set -uo pipefail
