@@ -73,6 +73,10 @@ struct Field_verdict
 {
   std::vector<Edge_verdict> singular; // the non-regular interior edges
   std::size_t improper = 0, jogs = 0, zippers = 0, dangling = 0;
+  // quarter-turn edges whose axis, read in the frame of each tetrahedron of the ring in turn (the
+  // holonomy of the loop from that tetrahedron), is within 45 degrees of the edge in some frames and not
+  // in others: a reading from one tetrahedron (as `jogs`, from the first) may call them either way
+  std::size_t ambiguous = 0;
   std::size_t defects() const { return improper + jogs + zippers + dangling; }
   Lenient_verdict lenient;
 };
@@ -110,6 +114,13 @@ inline Lenient_verdict lenient_reading(std::vector<Lenient_edge> edges, const st
     if(a.second.size() == 2 && edges[a.second[0]].valence != edges[a.second[1]].valence) ++r.zippers;
   }
   return r;
+}
+
+// The unit axis, in world coordinates, of the quarter turn G of the frame E: the skew part of E G E^T.
+inline Eigen::Vector3d world_axis(const Eigen::Matrix3d& E, const Eigen::Matrix3d& G)
+{
+  const Eigen::Matrix3d W = E * G * E.transpose();
+  return Eigen::Vector3d(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)).normalized(); // 2 sin(90) axis
 }
 
 // step(ti, tj): g with E_ti ~ E_tj g for face-adjacent tetrahedra.
@@ -182,10 +193,16 @@ Field_verdict evaluate(const std::vector<Eigen::Vector3d>& points, const std::ve
       v.kind = 0;
       ++verdict.improper;
     } else {
-      const Eigen::Matrix3d W = frames[ring[0]] * G * frames[ring[0]].transpose();
-      const Eigen::Vector3d w(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)); // 2 sin(90) axis
-      const Eigen::Vector3d axis = w.normalized();
+      const Eigen::Vector3d axis = world_axis(frames[ring[0]], G);
       s = axis.dot(d);
+      bool jog_somewhere = false, proper_somewhere = false;
+      for(std::size_t j = 0; j < ring.size(); ++j) {
+        Eigen::Matrix3d Gj = Eigen::Matrix3d::Identity();
+        for(std::size_t k = 0; k < ring.size(); ++k)
+          Gj = step(ring[(j + k + 1) % ring.size()], ring[(j + k) % ring.size()]).transpose() * Gj;
+        (std::abs(world_axis(frames[ring[j]], Gj).dot(d)) < std::sqrt(0.5) ? jog_somewhere : proper_somewhere) = true;
+      }
+      verdict.ambiguous += jog_somewhere && proper_somewhere;
       if(std::abs(s) < std::sqrt(0.5)) { v.kind = 1; ++verdict.jogs; }
       else v.kind = s > 0 ? 3 : 5;
       l.axis = axis;

@@ -870,11 +870,16 @@ TEST(Meshability, SharedModelsNeverWorse)
     const auto kept = evaluate_matchings(m, r.frames, r.matchings);
     const auto alone_plain = independent::evaluate_frames(points_of(m), tets_of(m), plain.frames);
     const auto alone = independent::evaluate_frames(points_of(m), tets_of(m), r.frames);
-    // the package's check agrees with the independent count (its own reasons beyond these aside)
+    // the package's check agrees with the independent count (its own reasons beyond these aside), up to
+    // the edges whose axis is within 45 degrees in the frames of some tetrahedra of the ring and not in
+    // others: the package reads each in one frame, the independent count in another; such an edge moves
+    // the jogs by one and the zippers at its two ends by up to two
     const auto& c = r.meshability;
-    EXPECT_EQ(kept.improper + kept.jogs + kept.zippers + kept.dangling,
-              c.count(HR::Meshability_reason::IMPROPER_EDGE) + c.count(HR::Meshability_reason::JOG) +
-                c.count(HR::Meshability_reason::ZIPPER) + c.count(HR::Meshability_reason::DANGLING_END)) << name;
+    const std::size_t independent_count = kept.improper + kept.jogs + kept.zippers + kept.dangling;
+    const std::size_t package_count = c.count(HR::Meshability_reason::IMPROPER_EDGE) + c.count(HR::Meshability_reason::JOG) +
+                                      c.count(HR::Meshability_reason::ZIPPER) + c.count(HR::Meshability_reason::DANGLING_END);
+    EXPECT_LE(std::max(independent_count, package_count) - std::min(independent_count, package_count), 3 * kept.ambiguous)
+      << name << ": independent " << independent_count << ", package " << package_count;
     EXPECT_LE(kept.defects(), kept_plain.defects()) << name;
     EXPECT_LE(alone.defects(), alone_plain.defects()) << name;
     // nor in the lenient reading of the map (a curve running backwards between two jogs is a zipper there)
@@ -891,9 +896,10 @@ TEST(Meshability, SharedModelsNeverWorse)
     }
     EXPECT_EQ(r.boundary_valences.matched, plain.boundary_valences.matched) << name;
     EXPECT_EQ(c.count(HR::Meshability_reason::FEATURE_SECTOR), plain.meshability.count(HR::Meshability_reason::FEATURE_SECTOR)) << name;
-    std::printf("%-28s tets %6zu  defects with the kept matchings %4zu -> %4zu (lenient %zu -> %zu), from the frames alone %4zu -> %4zu "
+    std::printf("%-28s tets %6zu  defects with the kept matchings %4zu -> %4zu (%zu edges read either way), "
+                "(lenient %zu -> %zu), from the frames alone %4zu -> %4zu "
                 "(improper %zu jogs %zu zippers %zu), invalid boundary corners %zu -> %zu, %zu faces changed%s, repair %.3f s, field %.3f s\n",
-                name.c_str(), m.number_of_tetrahedra(), kept_plain.defects(), kept.defects(), kept_plain.lenient.defects(),
+                name.c_str(), m.number_of_tetrahedra(), kept_plain.defects(), kept.defects(), kept.ambiguous, kept_plain.lenient.defects(),
                 kept.lenient.defects(), alone_plain.defects(),
                 alone.defects(), alone.improper, alone.jogs, alone.zippers, corners_plain, corners, r.repair.changed_faces,
                 r.repair.accepted ? "" : " (not kept)", r.repair.seconds, r.frame_field.seconds);
