@@ -97,7 +97,7 @@ int main(int argc, char** argv)
   }
   std::cout << "defects improper/jog/zipper/node/contact/plane: field of step 3 before the repair | realigned field after the"
                " surgery | returned field (kept matchings) | returned frames alone; disagreeing faces and feature sectors after the realignment;"
-               " changes by operation (move/zigzag/search/slide jog/slide end/hex scale; x: not kept); clusters of curves removed/found at the"
+               " changes by operation (move/zigzag/search/slide jog/slide end/sweep/hex scale; x: not kept); clusters of curves removed/found at the"
                " hex scale; seconds of the repair and of the frame field (median of "
             << runs << ")\n";
   for(const std::string& f : files) {
