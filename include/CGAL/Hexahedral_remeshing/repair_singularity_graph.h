@@ -15,8 +15,8 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/simplify_at_hex_scale.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_curve_end.h>
-#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/sweep_curve.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_jog.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/sweep_curve.h>
 
 #include <Eigen/Dense>
 
@@ -142,9 +142,9 @@ std::vector<std::unique_ptr<Singularity_repair_operation<Mesh> > > singularity_r
 /// cancelled (`"remove_zigzag"`), any other matching of a face around the defect
 /// (`"matching_search"`), a jog slid one vertex along its curve by two changes evaluated together
 /// (`"slide_jog"`), the end of a curve in a boundary plane slid by two triangles evaluated together
-/// (`"slide_end"`); then, where none of these helps, a piece of a curve swept across a sheet of up to 16
-/// triangles, each edge move chosen as the cheapest next one and the cheapest prefix of three moves or
-/// more kept (`"sweep_curve"`, named parameter `repair_sweeps`: a curve bent into a side face). A change
+/// (`"slide_end"`); then, where none of these helps, a piece of a curve swept across a sheet of up to 24
+/// triangles, each edge move chosen as the cheapest next one (from the 8 cheapest first moves) and the
+/// cheapest prefix of three moves or more kept (`"sweep_curve"`, named parameter `repair_sweeps`: a curve bent into a side face). A change
 /// is kept only if it lowers a cost in which defects dominate
 /// (improper edges, then jogs by their angle, then defective vertices) and the length of the
 /// singular curves breaks ties; so the repair never adds defects, and it stops at a local minimum.
