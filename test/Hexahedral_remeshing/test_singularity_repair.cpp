@@ -615,8 +615,8 @@ TEST(Meshability, CurveTouchingASideTakenOffIt)
 // curve cannot end at an interior vertex (the holonomies of the singular edges at a vertex, around the
 // punctures of its link sphere, multiply to the identity: one alone is the identity): the closest matchings
 // continue the curve along the branch cut of the frames' angle to the side x = -3, through jogs. Neither the
-// independent evaluation nor the check finds a dangling end, before or after the repair, and the repair
-// does not add a defect.
+// independent evaluation nor the check finds a dangling end, before or after the repair, and the repair's
+// sweeps take the jogs of the continuation off.
 TEST(Meshability, FramesEndingACurveInsideGiveNoDanglingEnd)
 {
   const Mesh m = kuhn_box();
@@ -644,6 +644,8 @@ TEST(Meshability, FramesEndingACurveInsideGiveNoDanglingEnd)
   EXPECT_EQ(repaired.dangling, 0u);
   EXPECT_EQ(r.defects_after[std::size_t(HR::Meshability_reason::DANGLING_END)], 0u);
   EXPECT_LE(repaired.defects(), ending.defects());
+  EXPECT_GE(r.swept_curves, 1u); // the continuation swept off its jogs
+  EXPECT_EQ(repaired.jogs, 0u);
   std::printf("curve ended by the frames: %zu singular edges (%zu jogs) -> %zu (%zu jogs), %zu faces changed\n",
               ending.singular.size(), ending.jogs, repaired.singular.size(), repaired.jogs, r.changed_faces);
 }
