@@ -73,7 +73,7 @@ template <class Traits, class NamedParameters, class RealignmentParameters>
 Repair_attempt attempt_repair(const Tetrahedral_mesh_3<Traits>& mesh, const std::vector<Eigen::Matrix3d>& frames,
                               const Matchings& matchings, const std::vector<int>& prescribed,
                               const std::vector<Eigen::Vector3d>& normals, const Compared_defects& kept_before,
-                              const Compared_defects& alone_before, std::size_t map_before, const NamedParameters& np,
+                              const Compared_defects& alone_before, const NamedParameters& np,
                               const RealignmentParameters& realignment_np)
 {
   Repair_attempt a;
@@ -90,7 +90,7 @@ Repair_attempt attempt_repair(const Tetrahedral_mesh_3<Traits>& mesh, const std:
   a.alone_graph = alone.graph;
   a.report.accepted = kept.no_worse_than(kept_before) && alone.no_worse_than(alone_before) &&
                       (kept.better_than(kept_before) || alone.better_than(alone_before) || a.report.simplified_clusters > 0) &&
-                      map_graph_defects(a.graph) <= map_before;
+                      map_graph_defects(a.graph) <= map_graph_defects(compute_singularity_graph(mesh, frames, matchings));
   return a;
 }
 
@@ -111,12 +111,11 @@ Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits
   // the surgery's own check of the realigned field with the kept matchings
   const Compared_defects kept_before(check_local_meshability(mesh, frames, matchings, prescribed, normals).counts);
   const Compared_defects alone_before(frame_check(mesh, frames).counts);
-  const std::size_t map_before = map_graph_defects(compute_singularity_graph(mesh, frames, matchings));
   Repair_attempt a =
-    attempt_repair(mesh, frames, matchings, prescribed, normals, kept_before, alone_before, map_before, np, realignment_np);
+    attempt_repair(mesh, frames, matchings, prescribed, normals, kept_before, alone_before, np, realignment_np);
   const bool retry = !a.report.accepted && a.report.swept_curves > 0;
   if(retry)
-    a = attempt_repair(mesh, frames, matchings, prescribed, normals, kept_before, alone_before, map_before,
+    a = attempt_repair(mesh, frames, matchings, prescribed, normals, kept_before, alone_before,
                        parameters::repair_sweeps(false, np), realignment_np);
   Singularity_repair_result r = a.report;
   r.without_sweeps = retry;
