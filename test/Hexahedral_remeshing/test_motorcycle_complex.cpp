@@ -1,0 +1,289 @@
+// Issue 27 step 2: the motorcycle complex of built seamless maps whose complexes are counted by hand
+// (blocks, patches, arcs, nodes), traced exactly through the tetrahedra the walls cross.
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/motorcycle_complex.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace MC = CGAL::Hexahedral_remeshing::internal::motorcycle;
+
+namespace {
+
+// A tetrahedral mesh with a map: positions, tetrahedra, the map at their corners.
+struct Built_map
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::uint32_t, 4> > tets;
+  std::vector<std::array<Eigen::Vector3d, 4> > parameters;
+
+  // adds a tetrahedron, reoriented so that its parameters are positively oriented
+  void add(std::array<std::uint32_t, 4> v, std::array<Eigen::Vector3d, 4> p)
+  {
+    if((p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) < 0) {
+      std::swap(v[2], v[3]);
+      std::swap(p[2], p[3]);
+    }
+    tets.push_back(v);
+    parameters.push_back(p);
+  }
+};
+
+// Unit cells (i, j, k) of a grid of step h, each split into the 6 Kuhn tetrahedra along its
+// diagonal; the map is the position, moved by `offset` at the vertices off the boundary.
+Built_map kuhn_cells(const std::set<std::array<int, 3> >& cells, double h,
+                     const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& offset = nullptr)
+{
+  Built_map m;
+  std::map<std::array<int, 3>, std::uint32_t> id;
+  auto vertex = [&](const std::array<int, 3>& g) {
+    auto it = id.emplace(g, std::uint32_t(m.points.size()));
+    if(it.second) m.points.push_back({{h * g[0], h * g[1], h * g[2]}});
+    return it.first->second;
+  };
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for(const auto& c : cells)
+    for(const auto& perm : perms) {
+      std::array<int, 3> g = c;
+      std::array<std::uint32_t, 4> v;
+      v[0] = vertex(g);
+      for(int s = 0; s < 3; ++s) {
+        ++g[std::size_t(perm[s])];
+        v[std::size_t(s + 1)] = vertex(g);
+      }
+      m.tets.push_back(v);
+    }
+  // boundary vertices: on a face of a single tetrahedron
+  std::map<std::array<std::uint32_t, 3>, int> faces;
+  for(const auto& t : m.tets)
+    for(int f = 0; f < 4; ++f) {
+      std::array<std::uint32_t, 3> k;
+      for(int i = 0, j = 0; i < 4; ++i)
+        if(i != f) k[std::size_t(j++)] = t[std::size_t(i)];
+      std::sort(k.begin(), k.end());
+      ++faces[k];
+    }
+  std::vector<char> boundary(m.points.size(), 0);
+  for(const auto& f : faces)
+    if(f.second == 1)
+      for(std::uint32_t v : f.first) boundary[v] = 1;
+  const std::vector<std::array<std::uint32_t, 4> > tets = m.tets;
+  m.tets.clear();
+  for(const auto& t : tets) {
+    std::array<Eigen::Vector3d, 4> p;
+    for(std::size_t c = 0; c < 4; ++c) {
+      const Eigen::Vector3d x(m.points[t[c]][0], m.points[t[c]][1], m.points[t[c]][2]);
+      p[c] = x + (offset && !boundary[t[c]] ? offset(x) : Eigen::Vector3d::Zero());
+    }
+    m.add(t, p);
+  }
+  return m;
+}
+
+// A triangular prism around a valence-3 axis: the equilateral triangle split into three kites
+// (centre, midpoint of a side, corner, midpoint of the next side), each kite the unit square of its
+// own chart, consecutive charts a quarter turn apart: three quarter turns around the axis.
+Built_map valence_three_prism(int layers)
+{
+  Built_map m;
+  const double pi = std::acos(-1.0);
+  std::array<Eigen::Vector2d, 3> P;
+  for(int i = 0; i < 3; ++i) P[std::size_t(i)] = Eigen::Vector2d(std::cos(pi / 2 + 2 * pi * i / 3), std::sin(pi / 2 + 2 * pi * i / 3));
+  // plane points: 0 centre, 1 + i corner i, 4 + i midpoint before corner i
+  std::vector<Eigen::Vector2d> plane{Eigen::Vector2d::Zero(), P[0], P[1], P[2]};
+  for(int i = 0; i < 3; ++i) plane.push_back((P[std::size_t((i + 2) % 3)] + P[std::size_t(i)]) / 2);
+  for(int z = 0; z <= layers; ++z)
+    for(const auto& q : plane) m.points.push_back({{q[0], q[1], double(z)}});
+  const std::uint32_t per_level = std::uint32_t(plane.size());
+  for(int i = 0; i < 3; ++i) {
+    const std::uint32_t C = 0, M = std::uint32_t(4 + i), Pc = std::uint32_t(1 + i), N = std::uint32_t(4 + (i + 1) % 3);
+    const std::map<std::uint32_t, Eigen::Vector2d> uv{{C, {0, 0}}, {M, {1, 0}}, {Pc, {1, 1}}, {N, {0, 1}}};
+    for(const std::array<std::uint32_t, 3>& tri : {std::array<std::uint32_t, 3>{{C, M, Pc}}, std::array<std::uint32_t, 3>{{C, Pc, N}}})
+      for(int z = 0; z < layers; ++z) {
+        std::array<std::uint32_t, 3> s = tri;
+        std::sort(s.begin(), s.end());
+        auto at = [&](std::uint32_t v, int level) { return v + std::uint32_t(level) * per_level; };
+        auto param = [&](std::uint32_t v, int level) { const Eigen::Vector2d& q = uv.at(v); return Eigen::Vector3d(q[0], q[1], double(level)); };
+        // the prism in 3 tetrahedra, diagonals by vertex number (conforming between prisms)
+        const std::array<std::array<std::pair<std::uint32_t, int>, 4>, 3> split{{
+          {{{s[0], z}, {s[1], z}, {s[2], z}, {s[0], z + 1}}},
+          {{{s[1], z}, {s[2], z}, {s[0], z + 1}, {s[1], z + 1}}},
+          {{{s[2], z}, {s[0], z + 1}, {s[1], z + 1}, {s[2], z + 1}}}}};
+        for(const auto& tet : split) {
+          std::array<std::uint32_t, 4> v;
+          std::array<Eigen::Vector3d, 4> p;
+          for(std::size_t c = 0; c < 4; ++c) {
+            v[c] = at(tet[c].first, tet[c].second);
+            p[c] = param(tet[c].first, tet[c].second);
+          }
+          m.add(v, p);
+        }
+      }
+  }
+  return m;
+}
+
+MC::Motorcycle_complex trace(const Built_map& m) { return MC::trace_motorcycle_complex(m.points, m.tets, m.parameters); }
+
+// The traced mesh is the same map: every tetrahedron positive, the same parameter volume.
+MC::Rational parameter_volume(const MC::Exact_map_mesh& mesh, std::size_t& not_positive)
+{
+  MC::Rational v = 0;
+  not_positive = 0;
+  for(const MC::Map_tetrahedron& T : mesh.tetrahedra) {
+    not_positive += MC::parameter_orientation(T) != CGAL::POSITIVE;
+    std::array<std::array<MC::Rational, 3>, 3> d;
+    for(std::size_t i = 0; i < 3; ++i)
+      for(std::size_t k = 0; k < 3; ++k) d[i][k] = T.parameter[i + 1][k] - T.parameter[0][k];
+    v += d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  }
+  return v / 6;
+}
+
+void expect_complex(const Built_map& m, std::size_t blocks, std::size_t patches, std::size_t arcs, std::size_t nodes,
+                    MC::Motorcycle_complex* out = nullptr)
+{
+  MC::Motorcycle_complex mc = trace(m);
+  const MC::Motorcycle_complex_report& r = mc.report;
+  ASSERT_TRUE(r.success) << r.reason;
+  EXPECT_EQ(r.blocks, blocks);
+  EXPECT_EQ(r.patches, patches);
+  EXPECT_EQ(r.arcs, arcs);
+  EXPECT_EQ(r.nodes, nodes);
+  std::size_t not_positive = 0;
+  const MC::Rational after = parameter_volume(*mc.mesh, not_positive);
+  EXPECT_EQ(not_positive, 0u);
+  MC::Exact_map_mesh input(m.points, m.tets, m.parameters);
+  std::size_t unused = 0;
+  EXPECT_EQ(after, parameter_volume(input, unused));
+  if(out) *out = std::move(mc);
+}
+
+std::set<std::array<int, 3> > box_cells(int a, int b, int c, const std::function<bool(int, int, int)>& keep = nullptr)
+{
+  std::set<std::array<int, 3> > s;
+  for(int i = 0; i < a; ++i)
+    for(int j = 0; j < b; ++j)
+      for(int k = 0; k < c; ++k)
+        if(!keep || keep(i, j, k)) s.insert({{i, j, k}});
+  return s;
+}
+
+// The L of the unit squares (0,0), (1,0), (0,1), one unit high, in cells of 1/2.
+std::set<std::array<int, 3> > l_cells()
+{
+  return box_cells(4, 4, 2, [](int i, int j, int) { return i < 2 || j < 2; });
+}
+
+} // namespace
+
+// A cube: no wall leaves the boundary; one block, its 6 faces, 12 edges, 8 corners.
+TEST(MotorcycleComplex, CubeIsOneBlock)
+{
+  const Built_map m = kuhn_cells(box_cells(3, 3, 3), 1.0 / 3);
+  MC::Motorcycle_complex mc;
+  expect_complex(m, 1, 6, 12, 8, &mc);
+  EXPECT_EQ(mc.report.singular_edges, 0u);
+  EXPECT_EQ(mc.report.feature_edges, 12u * 3u);
+  EXPECT_EQ(mc.report.split_edges, 0u);
+}
+
+// The L-prism: the two walls of the concave edge cut it into 3 blocks. By hand, in the cross-section:
+// 8 points (the 6 corners of the L, the 2 ends of the walls), 10 segments (6 sides, 2 of them cut in
+// two, and the 2 walls), 3 rectangles; extruded: 16 nodes, 10 x 2 + 8 = 28 arcs, 3 x 2 + 10 = 16
+// patches, 3 blocks (16 - 28 + 16 - 3 = 1, a ball).
+TEST(MotorcycleComplex, LPrismIsThreeBlocks)
+{
+  expect_complex(kuhn_cells(l_cells(), 0.5), 3, 16, 28, 16);
+}
+
+// The same L with the map moved off the grid inside (boundary kept on its planes): the walls now
+// cross tetrahedra and are traced through exact splits; same complex.
+TEST(MotorcycleComplex, LPrismWithWallsThroughTetrahedra)
+{
+  const Built_map m = kuhn_cells(l_cells(), 0.5, [](const Eigen::Vector3d& x) {
+    return Eigen::Vector3d(0.05 * std::sin(7 * x[0] + 3 * x[1] + 11 * x[2]), 0.05 * std::cos(5 * x[0] + 13 * x[1] + 2 * x[2]),
+                           0.05 * std::sin(3 * x[0] + 17 * x[1] + 5 * x[2]));
+  });
+  MC::Motorcycle_complex mc;
+  expect_complex(m, 3, 16, 28, 16, &mc);
+  EXPECT_GT(mc.report.split_edges, 0u);
+}
+
+// A prism around a valence-3 axis: three spokes from the axis to the midpoints of the sides, 3 blocks.
+// Cross-section: 7 points (centre, 3 corners, 3 midpoints), 9 segments (6 half sides, 3 spokes), 3
+// quadrilaterals; extruded by 2 layers: 14 nodes, 9 x 2 + 7 = 25 arcs, 3 x 2 + 9 = 15 patches.
+TEST(MotorcycleComplex, ValenceThreePrismIsThreeBlocks)
+{
+  const Built_map m = valence_three_prism(2);
+  MC::Motorcycle_complex mc;
+  expect_complex(m, 3, 15, 25, 14, &mc);
+  EXPECT_EQ(mc.report.singular_edges, 2u);
+}
+
+// A folded map has no complex, and says why.
+TEST(MotorcycleComplex, FoldedMapIsRefused)
+{
+  Built_map m = kuhn_cells(box_cells(2, 2, 2), 0.5);
+  m.parameters[0][0] += Eigen::Vector3d(0.7, 0.7, 0.7);
+  const MC::Motorcycle_complex mc = trace(m);
+  EXPECT_FALSE(mc.report.success);
+  EXPECT_GT(mc.report.inverted_tetrahedra, 0u);
+  EXPECT_EQ(mc.report.reason, "the map is not locally injective");
+}
+
+// The plus: five unit squares, four concave edges whose walls meet two by two on one plane (the
+// sides of the middle square). Cross-section: 12 corners, 12 sides and 4 walls, 5 squares;
+// extruded: 24 nodes, 16 x 2 + 12 = 44 arcs, 5 x 2 + 16 = 26 patches, 5 blocks.
+TEST(MotorcycleComplex, PlusPrismIsFiveBlocks)
+{
+  expect_complex(kuhn_cells(box_cells(6, 6, 2, [](int i, int j, int) { return (i >= 2 && i < 4) || (j >= 2 && j < 4); }), 0.5),
+                 5, 26, 44, 24);
+}
+
+namespace {
+
+// Wall faces (not boundary) of the identity map on the plane x[axis] = value whose centroid has
+// coordinate `along` in (lo, hi).
+std::size_t wall_faces_on(const MC::Exact_map_mesh& mesh, int axis, double value, int along, double lo, double hi)
+{
+  std::set<std::array<std::uint32_t, 3> > seen;
+  for(const MC::Map_tetrahedron& T : mesh.tetrahedra)
+    for(int f = 0; f < 4; ++f) {
+      if(T.wall[std::size_t(f)] < 0) continue;
+      bool on = true;
+      double c = 0;
+      for(int i = 0; i < 4; ++i)
+        if(i != f) {
+          on = on && T.parameter[std::size_t(i)][std::size_t(axis)] == MC::Rational(value);
+          c += CGAL::to_double(T.parameter[std::size_t(i)][std::size_t(along)]) / 3;
+        }
+      if(on && c > lo && c < hi) seen.insert(MC::Exact_map_mesh::face_key(T, f));
+    }
+  return seen.size();
+}
+
+} // namespace
+
+// Walls that cross: the square [0,4]^2 without [0,1]^2 (concave corner A = (1,1)) and without
+// [3,4] x [2,4] (concave corner B = (3,2)). A's wall x = 1 reaches y = 2 at distance 1, B's wall
+// y = 2 reaches x = 1 at distance 2: A's goes on to the top, B's stops on it; B's wall x = 3 reaches
+// y = 1 at distance 1, before A's wall y = 1 (distance 2), which stops on it. By hand: 12 points (8
+// corners, 2 wall ends on the boundary, 2 T-junctions), 16 segments, 5 rectangles; extruded: 24
+// nodes, 44 arcs, 26 patches, 5 blocks.
+TEST(MotorcycleComplex, CrossingWallsStopInOrderOfDistance)
+{
+  const Built_map m = kuhn_cells(box_cells(8, 8, 2, [](int i, int j, int) { return !(i < 2 && j < 2) && !(i >= 6 && j >= 4); }), 0.5);
+  MC::Motorcycle_complex mc;
+  expect_complex(m, 5, 26, 44, 24, &mc);
+  EXPECT_GT(wall_faces_on(*mc.mesh, 0, 1.0, 1, 2.5, 4.0), 0u);  // A's x = 1 above B's y = 2
+  EXPECT_EQ(wall_faces_on(*mc.mesh, 1, 2.0, 0, 0.0, 1.0), 0u);  // B's y = 2 stopped at x = 1
+  EXPECT_GT(wall_faces_on(*mc.mesh, 0, 3.0, 1, 0.0, 1.0), 0u);  // B's x = 3 below A's y = 1
+  EXPECT_EQ(wall_faces_on(*mc.mesh, 1, 1.0, 0, 3.0, 4.0), 0u);  // A's y = 1 stopped at x = 3
+}
