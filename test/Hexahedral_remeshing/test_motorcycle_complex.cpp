@@ -287,3 +287,43 @@ TEST(MotorcycleComplex, CrossingWallsStopInOrderOfDistance)
   EXPECT_GT(wall_faces_on(*mc.mesh, 0, 3.0, 1, 0.0, 1.0), 0u);  // B's x = 3 below A's y = 1
   EXPECT_EQ(wall_faces_on(*mc.mesh, 1, 1.0, 0, 3.0, 4.0), 0u);  // A's y = 1 stopped at x = 3
 }
+
+namespace {
+
+// The map's coordinates as their own variables: coordinate k of vertex v is variable 3 v + k.
+struct Vertex_forms : MC::Map_forms
+{
+  CGAL::Hexahedral_remeshing::internal::Linear_form corner(std::uint32_t, std::uint32_t v, int axis) const override
+  {
+    CGAL::Hexahedral_remeshing::internal::Linear_form f;
+    f.terms.emplace_back(Eigen::Index(3 * v + std::uint32_t(axis)), 1.0);
+    return f;
+  }
+};
+
+} // namespace
+
+// The blocks of the L-prism as boxes: 3 blocks x 3 axes, every extent 1 (a unit cube each), as a
+// function of the map's coordinates that gives the map's extent; kept apart (>= 1) where both sides
+// are boundary: the 3 heights and the two arms across their width, not the walls' sides.
+TEST(MotorcycleComplex, BlockExtentsOfTheLPrism)
+{
+  const Built_map m = kuhn_cells(l_cells(), 0.5);
+  const Vertex_forms forms;
+  const MC::Motorcycle_complex mc = MC::trace_motorcycle_complex(m.points, m.tets, m.parameters, 50, &forms);
+  ASSERT_TRUE(mc.report.success) << mc.report.reason;
+  EXPECT_EQ(mc.extents.extents.size(), 9u);
+  EXPECT_EQ(mc.extents.sides_without_form, 0u);
+  EXPECT_EQ(mc.extents.not_boxes, 0u);
+  Eigen::VectorXd y(Eigen::Index(3 * m.points.size()));
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    for(int k = 0; k < 3; ++k) y[Eigen::Index(3 * v + std::size_t(k))] = m.points[v][std::size_t(k)];
+  std::size_t separate = 0;
+  for(const MC::Block_extent& e : mc.extents.extents) {
+    EXPECT_EQ(e.seamless, MC::Rational(1));
+    EXPECT_DOUBLE_EQ(e.form(y), 1.0);
+    ASSERT_EQ(e.form.terms.size(), 2u);
+    separate += e.separate;
+  }
+  EXPECT_EQ(separate, 5u);
+}

@@ -29,6 +29,7 @@ struct Map_tetrahedron
   std::array<Parameter, 4> parameter;
   std::array<std::int64_t, 4> neighbor{{-1, -1, -1, -1}};
   std::array<int, 4> wall{{-1, -1, -1, -1}};
+  std::uint32_t origin = 0; // the tetrahedron of the input it is part of (its chart is that one's)
 };
 
 constexpr int NOT_A_WALL = -1;
@@ -54,6 +55,7 @@ public:
     for(std::size_t t = 0; t < tets.size(); ++t) {
       Map_tetrahedron& T = tetrahedra[t];
       T.vertex = tets[t];
+      T.origin = std::uint32_t(t);
       for(std::size_t c = 0; c < 4; ++c) T.parameter[c] = exact_parameter(parameters[t][c][0], parameters[t][c][1], parameters[t][c][2]);
       for(int f = 0; f < 4; ++f) {
         const std::array<std::uint32_t, 3> key = face_key(T, f);

@@ -4,6 +4,7 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_MOTORCYCLE_COMPLEX_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_MOTORCYCLE_COMPLEX_H
 
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/block_extents.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/complex_elements.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/trace_walls.h>
 
@@ -33,8 +34,21 @@ struct Motorcycle_complex
 {
   std::unique_ptr<Exact_map_mesh> mesh; // the map's tetrahedra, split where the walls cross them
   Complex_elements elements;
+  Block_extents extents; // with forms only
   Motorcycle_complex_report report;
 };
+
+// The extents of the blocks as functions of the map's variables (Block_extent_reader).
+inline Block_extents block_extents(const Exact_map_mesh& mesh, const Complex_elements& elements, const Map_forms& forms,
+                                   const std::vector<std::array<std::uint32_t, 4> >& tets,
+                                   const std::vector<std::array<Eigen::Vector3d, 4> >& parameters,
+                                   const std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> >& wall_planes)
+{
+  std::set<std::pair<std::uint32_t, std::uint32_t> > singular;
+  for(const auto& e : curve_edges(mesh).singular)
+    singular.emplace(std::min(e.second[0], e.second[1]), std::max(e.second[0], e.second[1]));
+  return Block_extent_reader(mesh, elements, forms, tets, parameters, wall_planes, singular).read();
+}
 
 // Exact orientation of tetrahedron t in its chart.
 inline CGAL::Sign parameter_orientation(const Map_tetrahedron& T)
@@ -54,11 +68,12 @@ inline CGAL::Sign parameter_orientation(const Map_tetrahedron& T)
 // parameter space, exactly) and put boundary faces on planes and curves on lines of its charts;
 // else the report says why and there is no complex. `maximum_growth`: the tracing stops (no complex)
 // when the split mesh has that many times the input's tetrahedra (a wall that never meets another).
+// With `forms` (the parameters as functions of the map's variables), the extents of the blocks too.
 // Not yet: toroidal blocks are not cut and the complex is not reduced.
 inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<double, 3> >& positions,
                                                    const std::vector<std::array<std::uint32_t, 4> >& tets,
                                                    const std::vector<std::array<Eigen::Vector3d, 4> >& parameters,
-                                                   double maximum_growth = 50)
+                                                   double maximum_growth = 50, const Map_forms* forms = nullptr)
 {
   const auto start = std::chrono::steady_clock::now();
   Motorcycle_complex mc;
@@ -73,7 +88,7 @@ inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<
   if(r.inverted_tetrahedra > 0) r.reason = "the map is not locally injective";
   else if(curves.not_seamless > 0) r.reason = "the map is not seamless (a transition is not a rotation of the cube)";
   else {
-    Wall_tracer tracer(mesh, std::size_t(maximum_growth * double(tets.size())));
+    Wall_tracer tracer(mesh, std::size_t(maximum_growth * double(tets.size())), forms, &tets);
     for(const auto& e : curves.singular) tracer.seed(e.first, e.second[0], e.second[1]);
     for(const auto& e : curves.feature) tracer.seed(e.first, e.second[0], e.second[1]);
     const bool traced = tracer.run();
@@ -89,6 +104,7 @@ inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<
       r.arcs = mc.elements.arcs;
       r.nodes = mc.elements.nodes;
       r.success = true;
+      if(forms) mc.extents = block_extents(mesh, mc.elements, *forms, tets, parameters, tracer.wall_planes);
     }
   }
   r.tetrahedra_after = mesh.tetrahedra.size();

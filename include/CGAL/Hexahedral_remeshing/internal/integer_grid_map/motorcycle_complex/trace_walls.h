@@ -5,9 +5,12 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_TRACE_WALLS_H
 
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/edge_rings.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/wall_forms.h>
 
 #include <cstdint>
+#include <map>
 #include <queue>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -27,15 +30,23 @@ class Wall_tracer
 public:
   std::size_t split_edges = 0, seeds = 0, not_seamless = 0;
   bool too_large = false;
+  // With forms: per wall and input tetrahedron, the planes of the wall in that chart with their values
+  // as functions of the map's variables.
+  std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> > wall_planes;
 
-  Wall_tracer(Exact_map_mesh& mesh, std::size_t maximum_tetrahedra) : m_mesh(mesh), m_maximum(maximum_tetrahedra) {}
+  // `forms` and `input` (the input tetrahedra) may be null: the walls' values are then not tracked.
+  Wall_tracer(Exact_map_mesh& mesh, std::size_t maximum_tetrahedra, const Map_forms* forms = nullptr,
+              const std::vector<std::array<std::uint32_t, 4> >* input = nullptr)
+    : m_mesh(mesh), m_maximum(maximum_tetrahedra), m_forms(forms), m_input(input)
+  {}
 
   // Two walls from the curve edge (x, y) of tetrahedron t (one line of its chart: two coordinates
   // constant), in every tetrahedron around the edge that the planes meet.
   void seed(std::size_t t, std::uint32_t x, std::uint32_t y)
   {
-    const Parameter& px = m_mesh.tetrahedra[t].parameter[std::size_t(m_mesh.corner(t, x))];
-    const Parameter& py = m_mesh.tetrahedra[t].parameter[std::size_t(m_mesh.corner(t, y))];
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    const Parameter& px = T.parameter[std::size_t(m_mesh.corner(t, x))];
+    const Parameter& py = T.parameter[std::size_t(m_mesh.corner(t, y))];
     int along = -1;
     for(int k = 0; k < 3; ++k)
       if(px[std::size_t(k)] != py[std::size_t(k)]) along = along < 0 ? k : 3;
@@ -43,7 +54,11 @@ public:
     for(int k = 0; k < 3; ++k) {
       if(k == along) continue;
       const int r = 3 - along - k;
-      seed_plane(t, x, y, Axis_plane{k, px[std::size_t(k)]}, Axis_plane{r, px[std::size_t(r)]});
+      Carried c;
+      c.plane.plane = Axis_plane{k, px[std::size_t(k)]};
+      if(m_forms) c.plane.value = m_forms->corner(T.origin, x, k);
+      c.ruler = Axis_plane{r, px[std::size_t(r)]};
+      seed_plane(t, x, y, c);
     }
   }
 
@@ -62,13 +77,19 @@ public:
   int walls() const { return m_walls; }
 
 private:
+  // What a wall carries from chart to chart: its plane (with its value form) and its ruler.
+  struct Carried
+  {
+    Plane_form plane;
+    Axis_plane ruler;
+  };
   struct Front
   {
     Rational distance;
     std::uint64_t order;
     std::size_t tet;
     int wall;
-    Axis_plane plane, ruler;
+    Carried carried;
   };
   struct Later
   {
@@ -77,6 +98,20 @@ private:
       return b.distance < a.distance || (b.distance == a.distance && b.order < a.order);
     }
   };
+
+  // `c` from tetrahedron `from` across its face f into the neighbor; false if not seamless there.
+  bool carry(Carried& c, std::size_t from, int f) const
+  {
+    Chart_transition t;
+    if(!m_mesh.transition(from, f, t)) return false;
+    const std::uint32_t o1 = m_mesh.tetrahedra[from].origin;
+    const std::uint32_t o2 = m_mesh.tetrahedra[std::size_t(m_mesh.tetrahedra[from].neighbor[std::size_t(f)])].origin;
+    if(o1 == o2) return true; // one chart: the identity
+    c.ruler = c.ruler.in(t);
+    if(m_forms) c.plane = plane_form_in(c.plane, t, translation_forms(*m_forms, *m_input, o1, o2, t));
+    else c.plane.plane = c.plane.plane.in(t);
+    return true;
+  }
 
   // Whether the plane cuts tetrahedron t through its edge (x, y) or holds one of its faces there.
   bool meets_beyond_edge(std::size_t t, std::uint32_t x, std::uint32_t y, const Axis_plane& plane) const
@@ -87,31 +122,28 @@ private:
     return a == CGAL::ZERO || b == CGAL::ZERO || a != b;
   }
 
-  void push(std::size_t t, int wall, const Axis_plane& plane, const Axis_plane& ruler)
+  void push(std::size_t t, int wall, const Carried& c)
   {
     Rational d = -1;
     for(const Parameter& p : m_mesh.tetrahedra[t].parameter) {
-      const Rational a = CGAL::abs(p[std::size_t(ruler.axis)] - ruler.value);
+      const Rational a = CGAL::abs(p[std::size_t(c.ruler.axis)] - c.ruler.value);
       if(d < 0 || a < d) d = a;
     }
-    m_queue.push(Front{d, m_order++, t, wall, plane, ruler});
+    m_queue.push(Front{d, m_order++, t, wall, c});
   }
 
-  void seed_plane(std::size_t t, std::uint32_t x, std::uint32_t y, const Axis_plane& plane, const Axis_plane& ruler)
+  void seed_plane(std::size_t t, std::uint32_t x, std::uint32_t y, const Carried& seed)
   {
     const int wall = m_walls++;
     ++seeds;
-    if(meets_beyond_edge(t, x, y, plane)) push(t, wall, plane, ruler);
+    if(meets_beyond_edge(t, x, y, seed.plane.plane)) push(t, wall, seed);
     const std::array<std::uint32_t, 2> z = m_mesh.other_vertices(t, x, y);
     for(std::uint32_t start : z) {
-      Chart_transition chart;
+      Carried c = seed;
       const bool closed = m_mesh.walk_around(t, x, y, start, [&](std::size_t from, int f, std::int64_t to) {
         if(to < 0 || std::size_t(to) == t) return true;
-        Chart_transition c;
-        if(!m_mesh.transition(from, f, c)) { ++not_seamless; return false; }
-        chart = chart.then(c);
-        const Axis_plane p = plane.in(chart);
-        if(meets_beyond_edge(std::size_t(to), x, y, p)) push(std::size_t(to), wall, p, ruler.in(chart));
+        if(!carry(c, from, f)) { ++not_seamless; return false; }
+        if(meets_beyond_edge(std::size_t(to), x, y, c.plane.plane)) push(std::size_t(to), wall, c);
         return true;
       });
       if(closed) break;
@@ -121,18 +153,13 @@ private:
   // From tetrahedron t across its face opposite z (x, y, z: a face of t on the wall's plane): the
   // first tetrahedron around (x, y) that the plane meets beyond the edge, unless a wall or the
   // boundary comes first.
-  void continue_past(std::size_t t, std::uint32_t x, std::uint32_t y, std::uint32_t z, int wall, const Axis_plane& plane,
-                     const Axis_plane& ruler)
+  void continue_past(std::size_t t, std::uint32_t x, std::uint32_t y, std::uint32_t z, int wall, Carried c)
   {
-    Chart_transition chart;
     m_mesh.walk_around(t, x, y, z, [&](std::size_t from, int f, std::int64_t to) {
       if(m_mesh.tetrahedra[from].wall[std::size_t(f)] != NOT_A_WALL || std::size_t(to) == t) return false;
-      Chart_transition c;
-      if(!m_mesh.transition(from, f, c)) { ++not_seamless; return false; }
-      chart = chart.then(c);
-      const Axis_plane p = plane.in(chart);
-      if(!meets_beyond_edge(std::size_t(to), x, y, p)) return true;
-      push(std::size_t(to), wall, p, ruler.in(chart));
+      if(!carry(c, from, f)) { ++not_seamless; return false; }
+      if(!meets_beyond_edge(std::size_t(to), x, y, c.plane.plane)) return true;
+      push(std::size_t(to), wall, c);
       return false;
     });
   }
@@ -140,20 +167,21 @@ private:
   void process(const Front& w)
   {
     const std::size_t t = w.tet;
+    const Axis_plane& plane = w.carried.plane.plane;
     std::array<CGAL::Sign, 4> s;
-    for(std::size_t c = 0; c < 4; ++c) s[c] = w.plane.side(m_mesh.tetrahedra[t].parameter[c]);
+    for(std::size_t c = 0; c < 4; ++c) s[c] = plane.side(m_mesh.tetrahedra[t].parameter[c]);
     for(std::size_t i = 0; i < 4; ++i)
       for(std::size_t j = i + 1; j < 4; ++j) {
         if(s[i] == CGAL::ZERO || s[j] == CGAL::ZERO || s[i] == s[j]) continue;
         const Map_tetrahedron& T = m_mesh.tetrahedra[t];
-        const std::size_t k = std::size_t(w.plane.axis);
-        const Rational lambda = (w.plane.value - T.parameter[i][k]) / (T.parameter[j][k] - T.parameter[i][k]);
+        const std::size_t k = std::size_t(plane.axis);
+        const Rational lambda = (plane.value - T.parameter[i][k]) / (T.parameter[j][k] - T.parameter[i][k]);
         const std::uint32_t x = T.vertex[i];
         m_mesh.split_edge(t, x, T.vertex[j], lambda);
         ++split_edges;
         const std::size_t half = std::size_t(m_mesh.tetrahedra[t].neighbor[std::size_t(m_mesh.corner(t, x))]);
-        push(t, w.wall, w.plane, w.ruler);
-        push(half, w.wall, w.plane, w.ruler);
+        push(t, w.wall, w.carried);
+        push(half, w.wall, w.carried);
         return;
       }
     for(int f = 0; f < 4; ++f) {
@@ -164,28 +192,41 @@ private:
     }
   }
 
+  void record(std::size_t t, int wall, const Plane_form& p)
+  {
+    if(!m_forms) return;
+    std::vector<Plane_form>& planes = wall_planes[std::make_pair(wall, m_mesh.tetrahedra[t].origin)];
+    for(const Plane_form& q : planes)
+      if(q.plane.axis == p.plane.axis && q.plane.value == p.plane.value) return;
+    planes.push_back(p);
+  }
+
   void mark_and_continue(std::size_t t, int f, const Front& w)
   {
     Map_tetrahedron& T = m_mesh.tetrahedra[t];
     const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
     T.wall[std::size_t(f)] = w.wall;
     m_mesh.tetrahedra[n].wall[std::size_t(m_mesh.face_towards(n, t))] = w.wall;
-    Chart_transition into_n;
-    const bool seamless = m_mesh.transition(t, f, into_n);
+    Carried beyond = w.carried;
+    const bool seamless = carry(beyond, t, f);
     not_seamless += !seamless;
+    record(t, w.wall, w.carried.plane);
+    if(seamless) record(n, w.wall, beyond.plane);
     const std::array<std::uint32_t, 4> v = T.vertex;
     for(int a = 0; a < 4; ++a) {
       if(a == f) continue;
       std::array<std::uint32_t, 2> edge;
       for(int b = 0, j = 0; b < 4; ++b)
         if(b != f && b != a) edge[std::size_t(j++)] = v[std::size_t(b)];
-      continue_past(t, edge[0], edge[1], v[std::size_t(a)], w.wall, w.plane, w.ruler);
-      if(seamless) continue_past(n, edge[0], edge[1], v[std::size_t(a)], w.wall, w.plane.in(into_n), w.ruler.in(into_n));
+      continue_past(t, edge[0], edge[1], v[std::size_t(a)], w.wall, w.carried);
+      if(seamless) continue_past(n, edge[0], edge[1], v[std::size_t(a)], w.wall, beyond);
     }
   }
 
   Exact_map_mesh& m_mesh;
   std::size_t m_maximum;
+  const Map_forms* m_forms;
+  const std::vector<std::array<std::uint32_t, 4> >* m_input;
   int m_walls = 0;
   std::uint64_t m_order = 0;
   std::priority_queue<Front, std::vector<Front>, Later> m_queue;

@@ -1,0 +1,219 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_BLOCK_EXTENTS_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_BLOCK_EXTENTS_H
+
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/complex_elements.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/wall_forms.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+namespace motorcycle {
+
+// The extent of a block along one axis of its chart: the distance between its two sides, as a function
+// of the map's variables (its value in the seamless map: `seamless`). Each block is a box of the map,
+// so its 3 extents are its arc lengths; the integer program keeps them >= 0, and >= 1 where the two
+// sides must stay apart (`separate`: both hold boundary faces, or a singular curve runs on each: a
+// zero extent would merge two boundary sheets or two curves).
+struct Block_extent
+{
+  std::uint32_t block = 0;
+  int axis = 0;
+  Rational seamless;
+  Linear_form form;
+  bool separate = false;
+  std::vector<std::uint32_t> input_tetrahedra; // the input tetrahedra the block overlaps
+};
+
+struct Block_extents
+{
+  std::vector<Block_extent> extents;
+  std::size_t sides_without_form = 0; // sides whose position is not known as a function (skipped)
+  std::size_t not_boxes = 0;          // blocks whose sides are not on two planes per axis (skipped)
+};
+
+namespace extents_detail {
+
+// A tetrahedron of a block developed into the block's chart: q_tet = R q_root + t.
+struct Pose
+{
+  Chart_transition chart;
+  std::array<Linear_form, 3> translation;
+};
+
+// What is known of one side of a block along one axis of its chart.
+struct Side
+{
+  bool found = false, has_form = false, critical = false;
+  Rational value;
+  Linear_form form;
+};
+
+struct Box
+{
+  bool is_box = true; // every face of a side on one plane
+  std::array<Side, 3> low, high;
+  std::set<std::uint32_t> input;
+};
+
+} // namespace extents_detail
+
+// Develops every block into one chart and reads its sides. `parameters` are the map's values at the
+// corners of the input tetrahedra `input`; `wall_planes` the walls' planes per input tetrahedron
+// (Wall_tracer::wall_planes); `singular` the singular edges of the traced mesh (vertex pairs, sorted).
+class Block_extent_reader
+{
+public:
+  Block_extent_reader(const Exact_map_mesh& mesh, const Complex_elements& elements, const Map_forms& forms,
+                      const std::vector<std::array<std::uint32_t, 4> >& input,
+                      const std::vector<std::array<Eigen::Vector3d, 4> >& parameters,
+                      const std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> >& wall_planes,
+                      const std::set<std::pair<std::uint32_t, std::uint32_t> >& singular)
+    : m_mesh(mesh), m_elements(elements), m_forms(forms), m_input(input), m_parameters(parameters),
+      m_wall_planes(wall_planes), m_singular(singular)
+  {}
+
+  Block_extents read() const
+  {
+    using namespace extents_detail;
+    Block_extents out;
+    std::vector<Box> boxes(m_elements.blocks);
+    std::vector<char> seen(m_mesh.tetrahedra.size(), 0);
+    for(std::size_t t = 0; t < m_mesh.tetrahedra.size(); ++t)
+      if(!seen[t]) develop(t, boxes[m_elements.block_of_tetrahedron[t]], seen, out);
+    for(std::size_t b = 0; b < boxes.size(); ++b) {
+      if(!boxes[b].is_box) { ++out.not_boxes; continue; }
+      for(int k = 0; k < 3; ++k) {
+        const Side& lo = boxes[b].low[std::size_t(k)];
+        const Side& hi = boxes[b].high[std::size_t(k)];
+        if(!lo.found || !hi.found || !lo.has_form || !hi.has_form) { ++out.sides_without_form; continue; }
+        Block_extent e;
+        e.block = std::uint32_t(b);
+        e.axis = k;
+        e.seamless = hi.value - lo.value;
+        e.form = hi.form.plus(lo.form, -1.0);
+        e.separate = lo.critical && hi.critical;
+        e.input_tetrahedra.assign(boxes[b].input.begin(), boxes[b].input.end());
+        out.extents.push_back(std::move(e));
+      }
+    }
+    return out;
+  }
+
+private:
+  void develop(std::size_t root, extents_detail::Box& box, std::vector<char>& seen, Block_extents& out) const
+  {
+    using namespace extents_detail;
+    std::deque<std::pair<std::size_t, Pose> > queue;
+    queue.emplace_back(root, Pose());
+    seen[root] = 1;
+    while(!queue.empty()) {
+      const auto [t, pose] = queue.front();
+      queue.pop_front();
+      const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+      box.input.insert(T.origin);
+      for(int f = 0; f < 4; ++f) {
+        if(T.wall[std::size_t(f)] != NOT_A_WALL) { read_side(t, f, pose, box); continue; }
+        const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
+        if(seen[n]) continue;
+        seen[n] = 1;
+        Chart_transition c;
+        if(!m_mesh.transition(t, f, c)) { ++out.sides_without_form; continue; }
+        Pose next;
+        next.chart = pose.chart.then(c);
+        std::array<Linear_form, 3> tf;
+        if(m_mesh.tetrahedra[n].origin != T.origin) tf = translation_forms(m_forms, m_input, T.origin, m_mesh.tetrahedra[n].origin, c);
+        for(std::size_t i = 0; i < 3; ++i)
+          next.translation[i] = pose.translation[std::size_t(c.R.axis[i])].scaled(double(c.R.sign[i])).plus(tf[i], 1.0);
+        queue.emplace_back(n, next);
+      }
+    }
+  }
+
+  // The plane of face f of t with its value form (false if the form is not known).
+  bool face_plane(std::size_t t, int f, Plane_form& p) const
+  {
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    if(!plane_of_face(m_mesh, t, f, p.plane)) return false;
+    if(T.wall[std::size_t(f)] >= 0) {
+      const auto it = m_wall_planes.find(std::make_pair(T.wall[std::size_t(f)], T.origin));
+      if(it == m_wall_planes.end()) return false;
+      for(const Plane_form& q : it->second)
+        if(q.plane.axis == p.plane.axis && q.plane.value == p.plane.value) { p.value = q.value; return true; }
+      return false;
+    }
+    // a boundary face: the plane of the input tetrahedron's corners on it
+    for(std::size_t c = 0; c < 4; ++c)
+      if(Rational(m_parameters[T.origin][c][p.plane.axis]) == p.plane.value) {
+        p.value = m_forms.corner(T.origin, m_input[T.origin][c], p.plane.axis);
+        return true;
+      }
+    return false;
+  }
+
+  bool touches_singular_edge(std::size_t t, int f) const
+  {
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    for(int a = 0; a < 4; ++a)
+      for(int b = a + 1; b < 4; ++b) {
+        if(a == f || b == f) continue;
+        std::uint32_t x = T.vertex[std::size_t(a)], y = T.vertex[std::size_t(b)];
+        if(x > y) std::swap(x, y);
+        if(m_singular.count(std::make_pair(x, y))) return true;
+      }
+    return false;
+  }
+
+  void read_side(std::size_t t, int f, const extents_detail::Pose& pose, extents_detail::Box& box) const
+  {
+    Plane_form p;
+    const bool has_form = face_plane(t, f, p);
+    if(!plane_of_face(m_mesh, t, f, p.plane)) return;
+    // q_t[k] = s_k q_root[a_k] + t_k = v  <=>  q_root[a_k] = s_k (v - t_k)
+    const std::size_t k = std::size_t(p.plane.axis);
+    const std::size_t K = std::size_t(pose.chart.R.axis[k]);
+    const double s = double(pose.chart.R.sign[k]);
+    const Rational V = pose.chart.R.sign[k] > 0 ? p.plane.value - pose.chart.t[k] : pose.chart.t[k] - p.plane.value;
+    const bool critical = m_mesh.tetrahedra[t].wall[std::size_t(f)] == BOUNDARY || touches_singular_edge(t, f);
+    // the side is the low one if the block is on the positive side of the face
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    const bool low = (pose.chart.R.sign[k] > 0) == (p.plane.side(T.parameter[std::size_t(f)]) == CGAL::POSITIVE);
+    extents_detail::Side& side = low ? box.low[K] : box.high[K];
+    side.critical = side.critical || critical;
+    if(side.found && side.value != V) box.is_box = false;
+    if(side.found && side.has_form) return;
+    side.found = true;
+    side.value = V;
+    if(has_form) {
+      side.has_form = true;
+      side.form = p.value.plus(pose.translation[k], -1.0).scaled(s);
+    }
+  }
+
+  const Exact_map_mesh& m_mesh;
+  const Complex_elements& m_elements;
+  const Map_forms& m_forms;
+  const std::vector<std::array<std::uint32_t, 4> >& m_input;
+  const std::vector<std::array<Eigen::Vector3d, 4> >& m_parameters;
+  const std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> >& m_wall_planes;
+  const std::set<std::pair<std::uint32_t, std::uint32_t> >& m_singular;
+};
+
+} // namespace motorcycle
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_BLOCK_EXTENTS_H
