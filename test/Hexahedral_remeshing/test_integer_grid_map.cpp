@@ -590,14 +590,18 @@ void print(const char* name, const Map_run& r)
               r.report.integer_variables, r.report.rounding_rounds, r.report.stiffening_rounds,
               int(r.report.untangling_ran), r.report.disagreeing_faces, r.report.target_edge_length, r.report.seconds,
               r.report.split_jog_edges, r.report.relaxed_inverted_tetrahedra, r.report.seamless_folds.size(), int(r.report.seamless_injective),
-              r.report.quantization == HR::Integer_grid_map_quantization::SEPARATION_PROGRAM ? "separation" : "greedy",
+              r.report.quantization == HR::Integer_grid_map_quantization::SEPARATION_PROGRAM   ? "separation"
+              : r.report.quantization == HR::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX ? "complex"
+                                                                                                : "greedy",
               r.report.folds_after_rounding, r.report.folds_after_separation, r.report.separation_rounds,
               r.report.quantization_reason.c_str());
 }
 
 // Issue 27: a wall thinner than half a hex edge. The greedy rounding puts both faces of the slab on
-// one integer plane (0.4 hex edges round to 0) and every tetrahedron collapses; the separation
-// program keeps the two planes one unit apart: one layer of unit cells.
+// one integer plane (0.4 hex edges round to 0) and every tetrahedron collapses. The motorcycle
+// complex of the seamless map is the box itself (one block, the extent across the slab between two
+// boundary sides kept >= 1); the separation program alone (around the folds) does the same: one
+// layer of unit cells either way.
 TEST(IntegerGridMap, ThinSlabKeepsOneLayer)
 {
   const Mesh m = from_off("hexrem_igm_slab", box_off(2, 2, 0.2), 0.0005);
@@ -606,13 +610,31 @@ TEST(IntegerGridMap, ThinSlabKeepsOneLayer)
   print("slab, greedy rounding", greedy);
   EXPECT_GT(greedy.check.inverted + greedy.check.degenerate, m.number_of_tetrahedra() / 2);
   EXPECT_EQ(greedy.report.quantization, HR::Integer_grid_map_quantization::GREEDY_ROUNDING);
+  EXPECT_FALSE(greedy.report.motorcycle_complex.traced);
   const Map_run r = run(m, HR::parameters::target_edge_length(0.5));
-  print("slab, separation", r);
-  EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
-  EXPECT_GE(r.report.separation_constraints, 1u);
+  print("slab, motorcycle complex", r);
+  EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX);
+  const HR::Integer_grid_map_complex& c = r.report.motorcycle_complex;
+  EXPECT_TRUE(c.traced);
+  EXPECT_EQ(c.blocks, 1u);
+  EXPECT_EQ(c.patches, 6u);
+  EXPECT_EQ(c.arcs, 12u);
+  EXPECT_EQ(c.nodes, 8u);
+  EXPECT_EQ(c.extents, 3u);
+  EXPECT_EQ(c.separated_extents, 3u);
+  EXPECT_GE(c.programs, 1);
+  EXPECT_EQ(c.folds_after_program, 0u);
   EXPECT_EQ(r.report.status, HR::Integer_grid_map_status::OK);
   expect_valid(r.check);
   EXPECT_NEAR(r.check.parameter_volume, 4.0 * 4.0 * 1.0, 1e-9);
+  const Map_run s = run(m, HR::parameters::quantization(HR::Integer_grid_map_quantization::SEPARATION_PROGRAM,
+                                                        HR::parameters::target_edge_length(0.5)));
+  print("slab, separation", s);
+  EXPECT_EQ(s.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
+  EXPECT_FALSE(s.report.motorcycle_complex.traced);
+  EXPECT_GE(s.report.separation_constraints, 1u);
+  expect_valid(s.check);
+  EXPECT_NEAR(s.check.parameter_volume, 4.0 * 4.0 * 1.0, 1e-9);
 }
 
 // Issue 27: two concave (valence-3) edges 0.4 hex edges apart, the bottom of a narrow slot. Rounded
@@ -624,14 +646,20 @@ TEST(IntegerGridMap, NarrowSlotKeepsItsTwoConcaveEdgesApart)
                                                              HR::parameters::target_edge_length(0.5)));
   print("slot, greedy rounding", greedy);
   const Map_run r = run(m, HR::parameters::target_edge_length(0.5));
-  print("slot, separation", r);
+  print("slot, motorcycle complex", r);
   std::size_t concave = 0;
   for(Index e : m.boundary_edges()) concave += r.field.valences[e] == 3;
   EXPECT_GT(concave, 0u);
   EXPECT_GT(greedy.check.inverted + greedy.check.degenerate, 0u);
-  EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
+  EXPECT_EQ(r.report.quantization, HR::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX);
+  EXPECT_TRUE(r.report.motorcycle_complex.traced);
   expect_valid(r.check);
   expect_same_valence_agreement(m, r);
+  const Map_run s = run(m, HR::parameters::quantization(HR::Integer_grid_map_quantization::SEPARATION_PROGRAM,
+                                                        HR::parameters::target_edge_length(0.5)));
+  print("slot, separation", s);
+  EXPECT_EQ(s.report.quantization, HR::Integer_grid_map_quantization::SEPARATION_PROGRAM);
+  expect_valid(s.check);
 }
 
 // Without the band of fixed frames along acute edges, the field's valence-3 curve runs in the

@@ -20,6 +20,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -90,9 +91,26 @@ inline std::string quantization_name(CGAL::Hexahedral_remeshing::Integer_grid_ma
 {
   switch(q) {
   case CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::SEPARATION_PROGRAM: return "separation_program";
+  case CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX: return "motorcycle_complex";
   case CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::GREEDY_ROUNDING: return "greedy_rounding";
   default: return "automatic";
   }
+}
+
+// One line on the motorcycle complex of the seamless map and its program.
+inline std::string complex_summary(const CGAL::Hexahedral_remeshing::Integer_grid_map_complex& c)
+{
+  if(!c.traced) return "not traced" + (c.reason.empty() ? std::string() : " (" + c.reason + ")");
+  std::ostringstream os;
+  os << c.blocks << " blocks, " << c.patches << " patches, " << c.arcs << " arcs, " << c.nodes << " nodes ("
+     << c.split_edges << " edges split, " << c.seconds << " s); " << c.extents << " block extents (" << c.separated_extents
+     << " kept >= 1, " << c.skipped_extents << " left out), ";
+  if(c.programs == 0) os << "the rounded values keep every block";
+  else
+    os << c.programs << " program(s) of " << c.program_variables << " variables and " << c.program_constraints
+       << " constraints, folds " << c.folds_after_rounding << " -> " << c.folds_after_program << " (" << c.reason << ", "
+       << c.program_seconds << " s)";
+  return os.str();
 }
 
 // The map block of the JSON reports of parametrize and remesh.
@@ -149,6 +167,27 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("separation_constraints", m.separation_constraints)
       .value("separation_variables", m.separation_variables)
       .value("separation_seconds", m.separation_seconds)
+      .begin("motorcycle_complex")
+      .value("traced", m.motorcycle_complex.traced)
+      .value("reason", m.motorcycle_complex.reason)
+      .value("blocks", m.motorcycle_complex.blocks)
+      .value("patches", m.motorcycle_complex.patches)
+      .value("arcs", m.motorcycle_complex.arcs)
+      .value("nodes", m.motorcycle_complex.nodes)
+      .value("split_tetrahedra", m.motorcycle_complex.split_tetrahedra)
+      .value("split_edges", m.motorcycle_complex.split_edges)
+      .value("extents", m.motorcycle_complex.extents)
+      .value("separated_extents", m.motorcycle_complex.separated_extents)
+      .value("skipped_extents", m.motorcycle_complex.skipped_extents)
+      .value("folds_after_rounding", m.motorcycle_complex.folds_after_rounding)
+      .value("folds_after_program", m.motorcycle_complex.folds_after_program)
+      .value("program_variables", m.motorcycle_complex.program_variables)
+      .value("program_constraints", m.motorcycle_complex.program_constraints)
+      .value("programs", m.motorcycle_complex.programs)
+      .value("objective", m.motorcycle_complex.objective)
+      .value("seconds", m.motorcycle_complex.seconds)
+      .value("program_seconds", m.motorcycle_complex.program_seconds)
+      .end()
       .end();
   std::vector<std::vector<long long> > interior, boundary;
   for(const auto& kv : c.interior_edge_valences) interior.push_back({kv.first, (long long)kv.second});
@@ -201,8 +240,12 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
             ? "separation program: " + std::to_string(m.folds_after_rounding) + " folded tetrahedra after the rounding, " +
                 std::to_string(m.folds_after_separation) + " after " + std::to_string(m.separation_rounds) + " program(s) with " +
                 std::to_string(m.separation_constraints) + " separation constraint(s)"
-            : "greedy rounding" + (m.quantization_reason.empty() ? std::string() : " (" + m.quantization_reason + ")"))
+            : m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX
+                ? "the motorcycle complex's program: " + std::to_string(m.motorcycle_complex.folds_after_rounding) +
+                    " folded tetrahedra after the rounding, 0 after " + std::to_string(m.motorcycle_complex.programs) + " program(s)"
+                : "greedy rounding" + (m.quantization_reason.empty() ? std::string() : " (" + m.quantization_reason + ")"))
       << "\n"
+      << "  motorcycle complex  " << complex_summary(m.motorcycle_complex) << "\n"
       << "  map check           " << (c.is_integer_grid() ? "integer-grid" : "NOT integer-grid") << ", interior edges by valence "
       << valence_list(c.interior_edge_valences) << "; boundary edges by valence " << valence_list(c.boundary_edge_valences)
       << "; boundary valences of the map " << a.matched << "/" << a.total << " as prescribed"

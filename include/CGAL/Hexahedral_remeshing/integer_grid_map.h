@@ -45,13 +45,20 @@ enum singular_vertex_relocation_t { singular_vertex_relocation };
 /// How `compute_integer_grid_map()` makes the integer values of the map (named parameter
 /// `quantization`), and which way made it (`Integer_grid_map_result::quantization`).
 enum class Integer_grid_map_quantization {
-  /// Greedy rounding, then, if the rounded map folds, the separation program where it folds; the
+  /// Greedy rounding checked on the motorcycle complex when the seamless map is injective (see
+  /// `MOTORCYCLE_COMPLEX`), then, if the map still folds, the separation program where it folds; a
   /// program's map is kept if it does not fold (as a parameter: the default).
   AUTOMATIC,
   /// Greedy mixed-integer rounding only (one variable batch at a time, re-solving in between).
   GREEDY_ROUNDING,
+  /// The motorcycle complex of the injective seamless map checks the rounded values (every block
+  /// extent >= 0, >= 1 between boundary sheets or curves) and, if they break one or fold the map, its
+  /// integer program chooses them (as a parameter: without the separation program afterwards).
+  /// (reported) The map of the complex's program, which did not fold.
+  MOTORCYCLE_COMPLEX,
   /// (reported) The map of the separation program: the rounded map folded, and the integer program
-  /// that keeps apart the entities it collapsed gave a map without folds.
+  /// that keeps apart the entities it collapsed around the folds gave a map without folds (as a
+  /// parameter: greedy rounding and the separation program, without the motorcycle complex).
   SEPARATION_PROGRAM
 };
 
@@ -150,6 +157,33 @@ struct Integer_grid_map_defect
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
+/// The motorcycle complex of the seamless map and its integer program (issue 27; robust_pipeline.md
+/// §3): walls traced exactly from every singular and feature curve of the injective seamless map, in
+/// order of parametric distance; the blocks' extents as functions of the integer variables.
+struct Integer_grid_map_complex
+{
+  /// True if the complex was traced (the seamless map is injective, the walls stopped in time).
+  bool traced = false;
+  /// Why it was not traced, or how its program ended.
+  std::string reason;
+  /// Blocks, patches, arcs and nodes of the complex (not reduced).
+  std::size_t blocks = 0, patches = 0, arcs = 0, nodes = 0;
+  /// Tetrahedra of the map's mesh once split by the walls, and the edges split.
+  std::size_t split_tetrahedra = 0, split_edges = 0;
+  /// Block extents in the program, those kept >= 1, those left out (a side whose position is unknown).
+  std::size_t extents = 0, separated_extents = 0, skipped_extents = 0;
+  /// Folded tetrahedra of the rounded map, of the program's map.
+  std::size_t folds_after_rounding = 0, folds_after_program = 0;
+  /// Integer variables and constraints of the last program, programs solved (0: the rounded values
+  /// kept every block and did not fold), objective of the last one.
+  std::size_t program_variables = 0, program_constraints = 0;
+  int programs = 0;
+  double objective = 0;
+  /// Seconds of the tracing (with the extents), of the programs (Cbc).
+  double seconds = 0, program_seconds = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
 /// Report of `compute_integer_grid_map()`.
 struct Integer_grid_map_result
 {
@@ -210,8 +244,11 @@ struct Integer_grid_map_result
   bool seamless_untangling_ran = false;
   /// Tetrahedra with `det J <= 0` (floating point) after the quantization, before the repair.
   std::size_t rounded_inverted_tetrahedra = 0;
-  /// The way the integer values were made: `GREEDY_ROUNDING` or `SEPARATION_PROGRAM`.
+  /// The way the integer values were made: `GREEDY_ROUNDING`, `MOTORCYCLE_COMPLEX` or `SEPARATION_PROGRAM`.
   Integer_grid_map_quantization quantization = Integer_grid_map_quantization::GREEDY_ROUNDING;
+  /// The motorcycle complex of the seamless map and its program (traced with `AUTOMATIC` and
+  /// `MOTORCYCLE_COMPLEX` when the seamless map is injective).
+  Integer_grid_map_complex motorcycle_complex;
   /// Why the separation program was not run, stopped, or not kept (empty with `GREEDY_ROUNDING` asked).
   std::string quantization_reason;
   /// Tetrahedra with `det J <= 0` after the greedy rounding, and the fewest after a separation
@@ -355,9 +392,6 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
     throw Input_error(source, 0, "compute_integer_grid_map: quantization_time_limit must be a finite number of seconds >= 0");
   o.seamless_parameters = choose_parameter(get_parameter(np, internal_np::seamless_map_parameters),
                                            static_cast<std::vector<std::array<Eigen::Vector3d, 4> >*>(nullptr));
-  if(o.quantization == Integer_grid_map_quantization::SEPARATION_PROGRAM)
-    throw Input_error(source, 0, "compute_integer_grid_map: quantization is AUTOMATIC or GREEDY_ROUNDING "
-                                 "(SEPARATION_PROGRAM is reported, not asked)");
   return o;
 }
 
@@ -376,11 +410,15 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 /// elimination of the cut constraints; the seamless map (every variable continuous), untangled
 /// with the foldover-free solver where it folds, snapped, and checked with exact orientations
 /// (`seamless_injective`, `seamless_folds`); greedy mixed-integer rounding with a CHOLMOD factorization
-/// analysed once; where the rounded map folds, separation constraints between the entities the
-/// rounding collapsed (boundary planes, singular and feature lines that the seamless map keeps apart
-/// along an axis) and an integer program solved with COIN-OR Cbc that satisfies them with the fewest
-/// changes (robust_pipeline.md §3; QGP3D's separation, searched around the folds in the tetrahedral
-/// mesh, not in a motorcycle complex); repair of the folds (foldover-free untangling around them, then stiffening of
+/// analysed once; where the rounded map folds and the seamless map is injective, the motorcycle
+/// complex of the seamless map (walls traced exactly from its singular and feature curves, in order of
+/// parametric distance; Brückler, Bommes, Campen 2022) gives every block extent as a function of the
+/// integer variables, and an integer program solved with COIN-OR Cbc keeps them >= 0, >= 1 between
+/// two boundary sides or two curves and, lazily, at the folds, with the fewest changes; where the map
+/// still folds, separation constraints between the entities the rounding collapsed (boundary planes,
+/// singular and feature lines that the seamless map keeps apart along an axis) searched around the
+/// folds in the tetrahedral mesh, and a program that satisfies them (robust_pipeline.md §3); a
+/// program's map is kept only if it does not fold; repair of the folds (foldover-free untangling around them, then stiffening of
 /// distorted tetrahedra and untangling everywhere if folds remain); snapping to a dyadic
 /// grid so that every transition holds exactly in double.
 ///
@@ -408,12 +446,12 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{quantization}
-///     \cgalParamDescription{how the integer values are made: greedy rounding, followed where the rounded map folds by the separation program (`AUTOMATIC`), or greedy rounding only}
+///     \cgalParamDescription{how the integer values are made: greedy rounding, followed where the rounded map folds by the motorcycle complex's program, then the separation program (`AUTOMATIC`); the complex's program only (`MOTORCYCLE_COMPLEX`); the separation program only (`SEPARATION_PROGRAM`); or greedy rounding only (`GREEDY_ROUNDING`)}
 ///     \cgalParamType{`Integer_grid_map_quantization`}
 ///     \cgalParamDefault{`Integer_grid_map_quantization::AUTOMATIC`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{quantization_time_limit}
-///     \cgalParamDescription{seconds the separation programs may take together; the best map found by then is kept}
+///     \cgalParamDescription{seconds the complex's programs, and the separation programs, may take together; the best map found by then is kept}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd

@@ -46,6 +46,12 @@ public:
 
   void fix(Eigen::Index i, double value) { m_fixed[std::size_t(i)] = 1; m_values[i] = value; }
   bool is_fixed(Eigen::Index i) const { return m_fixed[std::size_t(i)] != 0; }
+  // Frees every variable (a new quantization after one that was not kept).
+  void unfix_all()
+  {
+    std::fill(m_fixed.begin(), m_fixed.end(), char(0));
+    m_values.setZero();
+  }
   int factorizations() const { return m_factorizations; }
 
   // Solves; returns false if the factorization failed (matrix not positive definite).

@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/Integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/complex_quantization.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/cut_graph.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/field_diagnostics.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
@@ -32,11 +33,35 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
+
+// The motorcycle complex of the seamless map and its block extents (`Result`:
+// Integer_grid_map_result); false if there is none.
+template <class Traits, class Result>
+bool trace_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
+                   const Eigen::VectorXd& x0, const Seamless_map& seamless, Result& r, motorcycle::Block_extents& extents)
+{
+  motorcycle::Motorcycle_complex_report report;
+  const std::unique_ptr<motorcycle::Motorcycle_complex> complex = seamless_map_complex(mesh, P, x0, seamless, report);
+  auto& c = r.motorcycle_complex;
+  c.traced = report.success;
+  c.reason = report.success ? std::string() : report.reason;
+  c.blocks = report.blocks;
+  c.patches = report.patches;
+  c.arcs = report.arcs;
+  c.nodes = report.nodes;
+  c.split_tetrahedra = report.tetrahedra_after;
+  c.split_edges = report.split_edges;
+  c.seconds = report.seconds;
+  if(!complex || !report.success) return false;
+  extents = std::move(complex->extents);
+  return true;
+}
 
 // The stages of compute_integer_grid_map() on the map's mesh (the input mesh, or its copy with the
 // jog chords split): cut, reduction, elimination, seamless map, quantization, repair of the folds,
@@ -89,8 +114,9 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   auto jump_form = [&](std::uint32_t f, int k) { return reduced.jump_form(f, k); };
   const Separation_finder<Traits> finder(mesh, matchings, cut.cut, geometry, P, x0, reduced.integer_column, flat, jump_form);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(P.cols());
-  const Quantization_result q =
-    seamless.success ? quantize_map(finder, H, rhs, reduced.integer_column, seamless.y, o, solver, y, r) : Quantization_result{false};
+  auto trace = [&](motorcycle::Block_extents& extents) { return trace_complex(mesh, P, x0, seamless, r, extents); };
+  const Quantization_result q = seamless.success ? quantize_map(finder, trace, H, rhs, reduced.integer_column, seamless.y, o, solver, y, r)
+                                                 : Quantization_result{false};
   r.rounded_inverted_tetrahedra = count_non_positive_jacobians(geometry, P * y + x0);
   r.rounding_seconds = stage.end();
 

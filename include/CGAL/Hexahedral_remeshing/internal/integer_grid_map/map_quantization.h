@@ -6,6 +6,7 @@
 
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/complex_quantizer.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separating_quantizer.h>
 
@@ -55,12 +56,52 @@ void report_seamless_map(const Seamless_map& m, Result& r)
   r.seamless_untangling_ran = m.untangling_ran;
 }
 
-// The quantization of the map (`Options`: Map_options; `Result`: Integer_grid_map_result): greedy
-// rounding, or the separating quantizer with `seamless` (the untangled seamless map) as its
-// reference; the separation's report copied into `r`.
+// The complex's part of the report (`Complex`: Integer_grid_map_complex).
+template <class Complex>
+void report_complex_quantization(const motorcycle::Complex_quantization_report& q, Complex& c)
+{
+  if(q.traced || c.reason.empty()) c.reason = q.reason; // else why it was not traced
+  c.traced = c.traced && q.traced;
+  c.extents = q.extents;
+  c.separated_extents = q.separated;
+  c.skipped_extents = q.skipped_extents;
+  c.folds_after_rounding = q.folds_after_rounding;
+  c.folds_after_program = q.folds;
+  c.program_variables = q.variables;
+  c.program_constraints = q.constraints;
+  c.programs = q.rounds;
+  c.objective = q.objective;
+  c.program_seconds = q.program_seconds;
+}
+
+// The quantization on the motorcycle complex (complex_quantizer.h); true if its map is final: the
+// program's map does not fold, or the rounded one does not, or no other quantizer is asked.
 template <class Finder, class Options, class Result>
-Quantization_result quantize_map(const Finder& finder, const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs,
-                                 const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
+bool quantize_on_complex(const Finder& finder, const motorcycle::Complex_quantizer::Trace& trace, const Eigen::SparseMatrix<double>& H,
+                         const Eigen::VectorXd& rhs, const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
+                         const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r, Quantization_result& q)
+{
+  typedef decltype(r.quantization) Path;
+  motorcycle::Complex_quantizer quantizer(trace, seamless, [&](const Eigen::VectorXd& v) { return finder.folded(v); });
+  quantizer.time_limit = o.quantization_time_limit;
+  q = quantizer.quantize(H, rhs, integer_column, solver, y);
+  report_complex_quantization(quantizer.report, r.motorcycle_complex);
+  r.quantization = quantizer.report.used ? Path::MOTORCYCLE_COMPLEX : Path::GREEDY_ROUNDING;
+  r.folds_after_rounding = r.folds_after_separation = quantizer.report.folds_after_rounding;
+  if(!q.success || quantizer.report.used || quantizer.report.folds_after_rounding == 0 || o.quantization == Path::MOTORCYCLE_COMPLEX)
+    return true;
+  solver.unfix_all();
+  return false;
+}
+
+// The quantization of the map (`Options`: Map_options; `Result`: Integer_grid_map_result): greedy
+// rounding; where it folds, corrected on the motorcycle complex of the seamless map if there is one
+// (`trace`: Complex_quantizer::Trace); then, where the map still folds, the
+// separating quantizer with `seamless` (the untangled seamless map) as its reference; the reports
+// copied into `r`.
+template <class Finder, class Options, class Result>
+Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex_quantizer::Trace& trace, const Eigen::SparseMatrix<double>& H,
+                                 const Eigen::VectorXd& rhs, const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
                                  const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r)
 {
   typedef decltype(r.quantization) Path;
@@ -68,12 +109,15 @@ Quantization_result quantize_map(const Finder& finder, const Eigen::SparseMatrix
     Greedy_rounding_quantizer greedy;
     return greedy.quantize(H, rhs, integer_column, solver, y);
   }
+  Quantization_result q;
+  if(o.quantization != Path::SEPARATION_PROGRAM && quantize_on_complex(finder, trace, H, rhs, integer_column, seamless, o, solver, y, r, q))
+    return q;
   Separating_quantizer separating(
     [&](const Eigen::VectorXd& reference, const Eigen::VectorXd& v) { return finder.violated(reference, v); },
     [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
   separating.time_limit = o.quantization_time_limit;
   separating.seamless = seamless;
-  const Quantization_result q = separating.quantize(H, rhs, integer_column, solver, y);
+  q = separating.quantize(H, rhs, integer_column, solver, y);
   const Separation_report& sr = separating.report;
   r.quantization = sr.used ? Path::SEPARATION_PROGRAM : Path::GREEDY_ROUNDING;
   r.quantization_reason = sr.reason;

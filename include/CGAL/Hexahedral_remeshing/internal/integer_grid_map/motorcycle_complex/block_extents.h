@@ -25,8 +25,8 @@ namespace motorcycle {
 // The extent of a block along one axis of its chart: the distance between its two sides, as a function
 // of the map's variables (its value in the seamless map: `seamless`). Each block is a box of the map,
 // so its 3 extents are its arc lengths; the integer program keeps them >= 0, and >= 1 where the two
-// sides must stay apart (`separate`: both hold boundary faces, or a singular curve runs on each: a
-// zero extent would merge two boundary sheets or two curves).
+// sides must stay apart (`separate`: both are boundary, or a singular curve runs on each: a zero
+// extent would pinch the part or merge two curves).
 struct Block_extent
 {
   std::uint32_t block = 0;
@@ -56,7 +56,12 @@ struct Pose
 // What is known of one side of a block along one axis of its chart.
 struct Side
 {
-  bool found = false, has_form = false, critical = false;
+  bool found = false, has_form = false, on_curve = false;
+  std::size_t faces = 0, boundary_faces = 0;
+  // two sides that are both wholly boundary (a wall of the part) or both on a singular curve must
+  // stay apart; a side only partly on the boundary may merge with the opposite one (a step of the
+  // boundary smaller than a hex edge disappears), the program finds the folds that would make
+  bool critical() const { return on_curve || (faces > 0 && boundary_faces == faces); }
   Rational value;
   Linear_form form;
 };
@@ -104,7 +109,7 @@ public:
         e.axis = k;
         e.seamless = hi.value - lo.value;
         e.form = hi.form.plus(lo.form, -1.0);
-        e.separate = lo.critical && hi.critical;
+        e.separate = lo.critical() && hi.critical();
         e.input_tetrahedra.assign(boxes[b].input.begin(), boxes[b].input.end());
         out.extents.push_back(std::move(e));
       }
@@ -129,14 +134,14 @@ private:
         const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
         if(seen[n]) continue;
         seen[n] = 1;
-        Chart_transition c;
-        if(!m_mesh.transition(t, f, c)) { ++out.sides_without_form; continue; }
+        if(m_mesh.tetrahedra[n].origin == T.origin) { queue.emplace_back(n, pose); continue; }
+        const Chart_transition* c = m_mesh.transition(t, f);
+        if(!c) { ++out.sides_without_form; continue; }
         Pose next;
-        next.chart = pose.chart.then(c);
-        std::array<Linear_form, 3> tf;
-        if(m_mesh.tetrahedra[n].origin != T.origin) tf = translation_forms(m_forms, m_input, T.origin, m_mesh.tetrahedra[n].origin, c);
+        next.chart = pose.chart.then(*c);
+        const std::array<Linear_form, 3> tf = translation_forms(m_forms, m_input, T.origin, m_mesh.tetrahedra[n].origin, *c);
         for(std::size_t i = 0; i < 3; ++i)
-          next.translation[i] = pose.translation[std::size_t(c.R.axis[i])].scaled(double(c.R.sign[i])).plus(tf[i], 1.0);
+          next.translation[i] = pose.translation[std::size_t(c->R.axis[i])].scaled(double(c->R.sign[i])).plus(tf[i], 1.0);
         queue.emplace_back(n, next);
       }
     }
@@ -186,12 +191,14 @@ private:
     const std::size_t K = std::size_t(pose.chart.R.axis[k]);
     const double s = double(pose.chart.R.sign[k]);
     const Rational V = pose.chart.R.sign[k] > 0 ? p.plane.value - pose.chart.t[k] : pose.chart.t[k] - p.plane.value;
-    const bool critical = m_mesh.tetrahedra[t].wall[std::size_t(f)] == BOUNDARY || touches_singular_edge(t, f);
+    const bool boundary = m_mesh.tetrahedra[t].wall[std::size_t(f)] == BOUNDARY;
     // the side is the low one if the block is on the positive side of the face
     const Map_tetrahedron& T = m_mesh.tetrahedra[t];
     const bool low = (pose.chart.R.sign[k] > 0) == (p.plane.side(T.parameter[std::size_t(f)]) == CGAL::POSITIVE);
     extents_detail::Side& side = low ? box.low[K] : box.high[K];
-    side.critical = side.critical || critical;
+    ++side.faces;
+    side.boundary_faces += boundary;
+    side.on_curve = side.on_curve || touches_singular_edge(t, f);
     if(side.found && side.value != V) box.is_box = false;
     if(side.found && side.has_form) return;
     side.found = true;

@@ -4,6 +4,7 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_COMPLEX_QUANTIZER_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_COMPLEX_QUANTIZER_H
 
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_program.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/block_extents.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/motorcycle_complex.h>
@@ -12,6 +13,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -25,6 +27,7 @@ namespace motorcycle {
 // What the quantization by the motorcycle complex did (issue 27 steps 2-4).
 struct Complex_quantization_report
 {
+  bool traced = false;     // the complex was traced (only when the rounded map folds)
   bool used = false;       // the map comes from the complex's program and does not fold
   std::string reason;      // why not, or how it ended
   Motorcycle_complex_report complex;
@@ -33,41 +36,75 @@ struct Complex_quantization_report
   std::size_t variables = 0, constraints = 0;  // of the last program
   int rounds = 0;                               // programs solved
   double objective = 0, program_seconds = 0;
+  std::size_t folds_after_rounding = 0;         // folded tetrahedra of the rounded map
   std::size_t folds = 0;                        // folded tetrahedra of the last map
 };
 
 // The quantization on the motorcycle complex of the injective seamless map (QGP3D's formulation on the
 // variables of the map): every block extent (the length of the block's arcs along one axis) is an
-// affine function of the integer variables; one integer program (Cbc) chooses the integer values
-// closest to the seamless ones (sum |z - z_seamless|) with every extent >= 0 and >= 1 where the two
-// sides must stay apart (Block_extent::separate); the continuous variables are then solved with the
-// integer ones held (the re-embedding: patch sides equal by construction, since the arcs are those of
-// one map). Where the map still folds, the zero extents of the blocks with folded tetrahedra are kept
-// apart too (lazily, up to `maximum_rounds` programs).
+// affine function of the integer variables, to be >= 0, and >= 1 where the block's two sides must
+// stay apart (Block_extent::separate). The greedy rounding runs first; if its map folds, the complex
+// is traced and, if the rounded values break an extent or leave a zero extent at the folds (then kept
+// >= 1), one integer program (Cbc) moves as few integer values as it can (sum |z - z_rounded|
+// + 1/4 |z - z_seamless|) to satisfy every extent, and the continuous variables are solved with the
+// integer ones held (the re-embedding: patch sides equal by construction, the arcs being those of one
+// map). Where that map still folds, the zero extents of the blocks with folded tetrahedra are kept
+// apart too (lazily, up to `maximum_rounds` programs). The program's map is kept only if it does not
+// fold; else the rounded one (the caller then tries the separation around the folds).
 class Complex_quantizer : public Quantizer
 {
 public:
   typedef std::function<std::vector<char>(const Eigen::VectorXd&)> Folded; // per input tetrahedron
+  Greedy_rounding_quantizer greedy;
   double time_limit = 60;
   int maximum_rounds = 4;
+  double seamless_weight = 0.25;
   Complex_quantization_report report;
 
-  Complex_quantizer(Block_extents extents, const Eigen::VectorXd& seamless, Folded folded)
-    : m_extents(std::move(extents)), m_seamless(seamless), m_folded(std::move(folded))
+  // `trace` fills the block extents of the complex (false if there is none); it is called only if the
+  // rounded map folds.
+  typedef std::function<bool(Block_extents&)> Trace;
+
+  Complex_quantizer(Trace trace, const Eigen::VectorXd& seamless, Folded folded)
+    : m_trace(std::move(trace)), m_seamless(seamless), m_folded(std::move(folded))
   {}
 
   Quantization_result quantize(const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs,
                                const std::vector<char>& integer, Fixed_variable_solver& solver,
                                Eigen::VectorXd& y) override
   {
-    Quantization_result q;
-    q.relaxed = m_seamless;
-    solver.set_system(H, rhs);
+    Quantization_result q = greedy.quantize(H, rhs, integer, solver, y);
+    if(!q.success) { report.reason = "the rounding failed"; return q; }
+    const std::vector<char> folded = m_folded(y);
+    report.folds = report.folds_after_rounding = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
+    // a rounded map that does not fold has merged nothing that must stay apart: a collapsed block
+    // flattens the tetrahedra of the entities it merges
+    if(report.folds == 0) { report.reason = "the rounded map does not fold"; return q; }
+    if(!m_trace(m_extents)) { report.reason = "no motorcycle complex"; return q; }
+    report.traced = true;
     const std::vector<Block_extent*> extents = usable_extents(integer);
+    if(broken_extents(extents, y) == 0 && separate_zero_extents_at(extents, folded, y) == 0) {
+      report.reason = "the rounded map keeps every block";
+      return q;
+    }
+    const Eigen::VectorXd rounded = y;
     std::vector<Integer_program_variable> variables;
     for(Eigen::Index i = 0; i < Eigen::Index(integer.size()); ++i)
-      if(integer[std::size_t(i)]) variables.push_back({i, m_seamless[i], 1.0, m_seamless[i], 0.0});
+      if(integer[std::size_t(i)]) variables.push_back({i, rounded[i], 1.0, m_seamless[i], seamless_weight});
     report.variables = variables.size();
+    solve_programs(extents, variables, solver, y);
+    if(!report.used) {
+      for(const Integer_program_variable& v : variables) solver.fix(v.column, rounded[v.column]);
+      y = rounded;
+      report.reason += " (the rounded map kept)";
+    }
+    return q;
+  }
+
+private:
+  void solve_programs(const std::vector<Block_extent*>& extents, const std::vector<Integer_program_variable>& variables,
+                      Fixed_variable_solver& solver, Eigen::VectorXd& y)
+  {
     double seconds_left = time_limit;
     for(;;) {
       const std::vector<Linear_form> constraints = program_constraints(extents);
@@ -75,21 +112,26 @@ public:
       ++report.rounds;
       report.program_seconds += p.seconds;
       seconds_left -= p.seconds;
-      if(p.status == Integer_program_result::INFEASIBLE) { report.reason = "the complex's program is infeasible"; break; }
-      if(p.status == Integer_program_result::FAILED) { report.reason = "the complex's program failed or timed out"; break; }
+      if(p.status == Integer_program_result::INFEASIBLE) { report.reason = "the complex's program is infeasible"; return; }
+      if(p.status == Integer_program_result::FAILED) { report.reason = "the complex's program failed or timed out"; return; }
       report.objective = p.objective;
       for(std::size_t i = 0; i < variables.size(); ++i) solver.fix(variables[i].column, p.values[i]);
-      if(!solver.solve(y)) { q.success = false; report.reason = "factorization failed"; break; }
+      if(!solver.solve(y)) { report.reason = "factorization failed"; return; }
       const std::vector<char> folded = m_folded(y);
       report.folds = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
-      if(report.folds == 0) { report.used = true; report.reason = "no fold"; break; }
-      if(report.rounds == maximum_rounds || seconds_left <= 0) { report.reason = "folds left after the last program"; break; }
-      if(separate_zero_extents_at(extents, folded, y) == 0) { report.reason = "folds left without a zero extent there"; break; }
+      if(report.folds == 0) { report.used = true; report.reason = "no fold"; return; }
+      if(report.rounds == maximum_rounds || seconds_left <= 0) { report.reason = "folds left after the last program"; return; }
+      if(separate_zero_extents_at(extents, folded, y) == 0) { report.reason = "folds left without a zero extent there"; return; }
     }
-    return q;
   }
 
-private:
+  std::size_t broken_extents(const std::vector<Block_extent*>& extents, const Eigen::VectorXd& y) const
+  {
+    std::size_t n = 0;
+    for(const Block_extent* e : extents) n += e->form(y) < (e->separate ? 0.5 : -0.5);
+    return n;
+  }
+
   // The extents whose forms are over integer variables and agree with the seamless map.
   std::vector<Block_extent*> usable_extents(const std::vector<char>& integer)
   {
@@ -102,6 +144,8 @@ private:
       else ++report.skipped_extents;
     }
     report.skipped_extents += m_extents.sides_without_form + m_extents.not_boxes;
+    report.extents = out.size();
+    report.separated = std::size_t(std::count_if(out.begin(), out.end(), [](const Block_extent* e) { return e->separate; }));
     return out;
   }
 
@@ -110,15 +154,14 @@ private:
     std::vector<Linear_form> c;
     report.separated = 0;
     for(const Block_extent* e : extents) {
+      report.separated += e->separate;
       if(e->form.terms.empty()) continue; // fixed by the constraints of the map
       Linear_form f = e->form;
-      if(e->separate) ++report.separated;
-      else f.constant += 1; // extent >= 0
+      if(!e->separate) f.constant += 1; // extent >= 0
       c.push_back(f);
     }
     std::sort(c.begin(), c.end());
     c.erase(std::unique(c.begin(), c.end()), c.end());
-    report.extents = extents.size();
     report.constraints = c.size();
     return c;
   }
@@ -136,6 +179,7 @@ private:
     return added;
   }
 
+  Trace m_trace;
   Block_extents m_extents;
   Eigen::VectorXd m_seamless;
   Folded m_folded;

@@ -55,9 +55,9 @@ inline Edge_ring ring_of_edge(const Exact_map_mesh& mesh, std::size_t t, std::ui
   mesh.walk_around(start, x, y, start_z, [&](std::size_t from, int f, std::int64_t to) {
     ring.faces.push_back(Ring_face{from, f, chart});
     if(to < 0) return false;
-    Chart_transition c;
-    if(!mesh.transition(from, f, c)) { ring.seamless = false; return false; }
-    chart = chart.then(c);
+    const Chart_transition* c = mesh.transition(from, f);
+    if(!c) { ring.seamless = false; return false; }
+    if(mesh.tetrahedra[from].origin != mesh.tetrahedra[std::size_t(to)].origin) chart = chart.then(*c);
     return true;
   });
   ring.holonomy = chart;

@@ -6,8 +6,10 @@
 
 #include <CGAL/Exact_rational.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -95,7 +97,23 @@ struct Chart_transition
 // points are collinear in parameter space).
 inline bool transition_between(const std::array<Parameter, 3>& from, const std::array<Parameter, 3>& to, Chart_transition& out)
 {
+  // the rotation that the edge vectors suggest in floating point first, then all of them
+  std::array<std::array<double, 3>, 2> d, e;
+  for(std::size_t k = 0; k < 2; ++k)
+    for(std::size_t i = 0; i < 3; ++i) {
+      d[k][i] = CGAL::to_double(from[k + 1][i] - from[0][i]);
+      e[k][i] = CGAL::to_double(to[k + 1][i] - to[0][i]);
+    }
+  std::vector<std::pair<double, const Signed_permutation*> > order;
   for(const Signed_permutation& R : octahedral_rotations()) {
+    double mismatch = 0;
+    for(std::size_t k = 0; k < 2; ++k)
+      for(std::size_t i = 0; i < 3; ++i) mismatch += std::abs(e[k][i] - R.sign[i] * d[k][std::size_t(R.axis[i])]);
+    order.emplace_back(mismatch, &R);
+  }
+  std::sort(order.begin(), order.end());
+  for(const auto& candidate : order) {
+    const Signed_permutation& R = *candidate.second;
     Chart_transition c;
     c.R = R;
     for(std::size_t i = 0; i < 3; ++i) c.t[i] = Rational(0);
@@ -114,7 +132,7 @@ struct Axis_plane
   int axis = 0;
   Rational value;
 
-  CGAL::Sign side(const Parameter& p) const { return CGAL::sign(p[std::size_t(axis)] - value); }
+  CGAL::Sign side(const Parameter& p) const { return CGAL::compare(p[std::size_t(axis)], value); }
   Axis_plane in(const Chart_transition& c) const
   {
     Axis_plane q;

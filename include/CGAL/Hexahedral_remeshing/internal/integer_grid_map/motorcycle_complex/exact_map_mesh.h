@@ -12,7 +12,10 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <stdexcept>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -98,18 +101,32 @@ public:
 
   // The chart change from tetrahedron t to its neighbor across face f; false if the map is not
   // seamless across it.
-  bool transition(std::size_t t, int f, Chart_transition& c) const
+  // The parts of one input tetrahedron share its chart, so the change only depends on the two input
+  // tetrahedra: computed once per pair. Null if the map is not seamless across the face.
+  const Chart_transition* transition(std::size_t t, int f) const
   {
+    static const Chart_transition identity;
     const Map_tetrahedron& T = tetrahedra[t];
     const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
-    std::array<Parameter, 3> from, to;
-    for(int i = 0, j = 0; i < 4; ++i) {
-      if(i == f) continue;
-      from[std::size_t(j)] = T.parameter[std::size_t(i)];
-      to[std::size_t(j++)] = tetrahedra[n].parameter[std::size_t(corner(n, T.vertex[std::size_t(i)]))];
+    if(tetrahedra[n].origin == T.origin) return &identity;
+    const std::uint64_t key = (std::uint64_t(T.origin) << 32) | tetrahedra[n].origin;
+    auto it = m_transitions.find(key);
+    if(it == m_transitions.end()) {
+      std::array<Parameter, 3> from, to;
+      for(int i = 0, j = 0; i < 4; ++i) {
+        if(i == f) continue;
+        from[std::size_t(j)] = T.parameter[std::size_t(i)];
+        to[std::size_t(j++)] = tetrahedra[n].parameter[std::size_t(corner(n, T.vertex[std::size_t(i)]))];
+      }
+      Chart_transition c;
+      const bool ok = transition_between(from, to, c);
+      it = m_transitions.emplace(key, std::make_pair(c, ok)).first;
     }
-    return transition_between(from, to, c);
+    return it->second.second ? &it->second.first : nullptr;
   }
+
+  // The singular edges, kept up to date by the splits (set by the caller).
+  std::set<std::pair<std::uint32_t, std::uint32_t> > singular_edges;
 
   // Walks around the edge (x, y) of tetrahedron t, first across the face of t opposite its vertex z
   // (not x nor y). Calls step(from, face, to) at every crossing, face being the face of `from`
@@ -159,6 +176,10 @@ public:
     for(std::size_t r : ring) half_at_y[r] = tetrahedra.size() + half_at_y.size();
     tetrahedra.resize(tetrahedra.size() + ring.size());
     for(std::size_t r : ring) bisect(r, half_at_y[r], x, y, w, lambda, half_at_y);
+    if(singular_edges.erase(std::make_pair(std::min(x, y), std::max(x, y)))) {
+      singular_edges.emplace(std::min(x, w), std::max(x, w));
+      singular_edges.emplace(std::min(y, w), std::max(y, w));
+    }
     return w;
   }
 
@@ -176,6 +197,8 @@ public:
   }
 
 private:
+  mutable std::unordered_map<std::uint64_t, std::pair<Chart_transition, bool> > m_transitions;
+
   void bisect(std::size_t t, std::size_t t2, std::uint32_t x, std::uint32_t y, std::uint32_t w, const Rational& lambda,
               const std::map<std::size_t, std::size_t>& half_at_y)
   {

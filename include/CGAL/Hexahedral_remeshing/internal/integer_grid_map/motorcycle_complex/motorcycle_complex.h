@@ -44,10 +44,7 @@ inline Block_extents block_extents(const Exact_map_mesh& mesh, const Complex_ele
                                    const std::vector<std::array<Eigen::Vector3d, 4> >& parameters,
                                    const std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> >& wall_planes)
 {
-  std::set<std::pair<std::uint32_t, std::uint32_t> > singular;
-  for(const auto& e : curve_edges(mesh).singular)
-    singular.emplace(std::min(e.second[0], e.second[1]), std::max(e.second[0], e.second[1]));
-  return Block_extent_reader(mesh, elements, forms, tets, parameters, wall_planes, singular).read();
+  return Block_extent_reader(mesh, elements, forms, tets, parameters, wall_planes, mesh.singular_edges).read();
 }
 
 // Exact orientation of tetrahedron t in its chart.
@@ -84,6 +81,8 @@ inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<
   for(const Map_tetrahedron& T : mesh.tetrahedra) r.inverted_tetrahedra += parameter_orientation(T) != CGAL::POSITIVE;
   const Curve_edges curves = curve_edges(mesh);
   r.singular_edges = curves.singular.size();
+  for(const auto& e : curves.singular)
+    mesh.singular_edges.emplace(std::min(e.second[0], e.second[1]), std::max(e.second[0], e.second[1]));
   r.feature_edges = curves.feature.size();
   if(r.inverted_tetrahedra > 0) r.reason = "the map is not locally injective";
   else if(curves.not_seamless > 0) r.reason = "the map is not seamless (a transition is not a rotation of the cube)";

@@ -102,11 +102,12 @@ private:
   // `c` from tetrahedron `from` across its face f into the neighbor; false if not seamless there.
   bool carry(Carried& c, std::size_t from, int f) const
   {
-    Chart_transition t;
-    if(!m_mesh.transition(from, f, t)) return false;
     const std::uint32_t o1 = m_mesh.tetrahedra[from].origin;
     const std::uint32_t o2 = m_mesh.tetrahedra[std::size_t(m_mesh.tetrahedra[from].neighbor[std::size_t(f)])].origin;
     if(o1 == o2) return true; // one chart: the identity
+    const Chart_transition* tp = m_mesh.transition(from, f);
+    if(!tp) return false;
+    const Chart_transition& t = *tp;
     c.ruler = c.ruler.in(t);
     if(m_forms) c.plane = plane_form_in(c.plane, t, translation_forms(*m_forms, *m_input, o1, o2, t));
     else c.plane.plane = c.plane.plane.in(t);
