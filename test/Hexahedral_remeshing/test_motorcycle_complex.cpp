@@ -85,32 +85,38 @@ Built_map kuhn_cells(const std::set<std::array<int, 3> >& cells, double h,
   return m;
 }
 
-// A triangular prism around a valence-3 axis: the equilateral triangle split into three kites
-// (centre, midpoint of a side, corner, midpoint of the next side), each kite the unit square of its
-// own chart, consecutive charts a quarter turn apart: three quarter turns around the axis.
-Built_map valence_three_prism(int layers)
+// Triangles (corners counterclockwise) each split into three kites (centre, midpoint of a side,
+// corner, midpoint of the next side), every kite the unit square of its own chart, extruded by
+// `layers`: a valence-3 axis through the centre of every triangle (three quarter turns around it).
+Built_map kite_prism(const std::vector<Eigen::Vector2d>& corners, const std::vector<std::array<int, 3> >& triangles, int layers)
 {
   Built_map m;
-  const double pi = std::acos(-1.0);
-  std::array<Eigen::Vector2d, 3> P;
-  for(int i = 0; i < 3; ++i) P[std::size_t(i)] = Eigen::Vector2d(std::cos(pi / 2 + 2 * pi * i / 3), std::sin(pi / 2 + 2 * pi * i / 3));
-  // plane points: 0 centre, 1 + i corner i, 4 + i midpoint before corner i
-  std::vector<Eigen::Vector2d> plane{Eigen::Vector2d::Zero(), P[0], P[1], P[2]};
-  for(int i = 0; i < 3; ++i) plane.push_back((P[std::size_t((i + 2) % 3)] + P[std::size_t(i)]) / 2);
+  std::vector<Eigen::Vector2d> plane = corners;
+  std::map<std::pair<int, int>, std::uint32_t> midpoint;
+  auto mid = [&](int a, int b) {
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    auto it = midpoint.emplace(key, std::uint32_t(plane.size()));
+    if(it.second) plane.push_back((corners[std::size_t(a)] + corners[std::size_t(b)]) / 2);
+    return it.first->second;
+  };
+  std::vector<std::array<std::uint32_t, 4> > kites;
+  for(const auto& t : triangles) {
+    const std::uint32_t C = std::uint32_t(plane.size());
+    plane.push_back((corners[std::size_t(t[0])] + corners[std::size_t(t[1])] + corners[std::size_t(t[2])]) / 3);
+    for(int i = 0; i < 3; ++i)
+      kites.push_back({{C, mid(t[std::size_t((i + 2) % 3)], t[std::size_t(i)]), std::uint32_t(t[std::size_t(i)]),
+                        mid(t[std::size_t(i)], t[std::size_t((i + 1) % 3)])}});
+  }
   for(int z = 0; z <= layers; ++z)
     for(const auto& q : plane) m.points.push_back({{q[0], q[1], double(z)}});
   const std::uint32_t per_level = std::uint32_t(plane.size());
-  for(int i = 0; i < 3; ++i) {
-    const std::uint32_t C = 0, M = std::uint32_t(4 + i), Pc = std::uint32_t(1 + i), N = std::uint32_t(4 + (i + 1) % 3);
-    const std::map<std::uint32_t, Eigen::Vector2d> uv{{C, {0, 0}}, {M, {1, 0}}, {Pc, {1, 1}}, {N, {0, 1}}};
-    for(const std::array<std::uint32_t, 3>& tri : {std::array<std::uint32_t, 3>{{C, M, Pc}}, std::array<std::uint32_t, 3>{{C, Pc, N}}})
+  const std::array<Eigen::Vector2d, 4> square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  for(const auto& k : kites)
+    for(const std::array<int, 3>& tri : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}})
       for(int z = 0; z < layers; ++z) {
-        std::array<std::uint32_t, 3> s = tri;
-        std::sort(s.begin(), s.end());
-        auto at = [&](std::uint32_t v, int level) { return v + std::uint32_t(level) * per_level; };
-        auto param = [&](std::uint32_t v, int level) { const Eigen::Vector2d& q = uv.at(v); return Eigen::Vector3d(q[0], q[1], double(level)); };
-        // the prism in 3 tetrahedra, diagonals by vertex number (conforming between prisms)
-        const std::array<std::array<std::pair<std::uint32_t, int>, 4>, 3> split{{
+        std::array<int, 3> s = tri; // kite corners sorted by vertex number: conforming diagonals
+        std::sort(s.begin(), s.end(), [&](int a, int b) { return k[std::size_t(a)] < k[std::size_t(b)]; });
+        const std::array<std::array<std::pair<int, int>, 4>, 3> split{{
           {{{s[0], z}, {s[1], z}, {s[2], z}, {s[0], z + 1}}},
           {{{s[1], z}, {s[2], z}, {s[0], z + 1}, {s[1], z + 1}}},
           {{{s[2], z}, {s[0], z + 1}, {s[1], z + 1}, {s[2], z + 1}}}}};
@@ -118,14 +124,23 @@ Built_map valence_three_prism(int layers)
           std::array<std::uint32_t, 4> v;
           std::array<Eigen::Vector3d, 4> p;
           for(std::size_t c = 0; c < 4; ++c) {
-            v[c] = at(tet[c].first, tet[c].second);
-            p[c] = param(tet[c].first, tet[c].second);
+            v[c] = k[std::size_t(tet[c].first)] + std::uint32_t(tet[c].second) * per_level;
+            const Eigen::Vector2d& q = square[std::size_t(tet[c].first)];
+            p[c] = Eigen::Vector3d(q[0], q[1], double(tet[c].second));
           }
           m.add(v, p);
         }
       }
-  }
   return m;
+}
+
+// The equilateral triangle: one valence-3 axis.
+Built_map valence_three_prism(int layers)
+{
+  const double pi = std::acos(-1.0);
+  std::vector<Eigen::Vector2d> P;
+  for(int i = 0; i < 3; ++i) P.emplace_back(std::cos(pi / 2 + 2 * pi * i / 3), std::sin(pi / 2 + 2 * pi * i / 3));
+  return kite_prism(P, {{{0, 1, 2}}}, layers);
 }
 
 MC::Motorcycle_complex trace(const Built_map& m) { return MC::trace_motorcycle_complex(m.points, m.tets, m.parameters); }
@@ -326,4 +341,34 @@ TEST(MotorcycleComplex, BlockExtentsOfTheLPrism)
     separate += e.separate;
   }
   EXPECT_EQ(separate, 5u);
+}
+
+// Two valence-3 axes: the rhombus of two triangles, each in three kites. The spoke of each axis
+// towards the shared side goes on straight through the side's midpoint (four kites there) to the other
+// axis: one wall joins the two curves. The kites on either side of the shared side make one block
+// each (that side is no wall), a box whose two ends are on the two curves. By hand, in the cross-
+// section: 8 nodes (the 2 axes, the 4 ends of the other spokes, the 2 far corners; the near corners are
+// flat in the map, 90 + 90 degrees), 11 arcs (5 walls, 6 boundary pieces), 4 blocks; one layer
+// extruded: 16 nodes, 11 x 2 + 8 = 30 arcs, 4 x 2 + 11 = 19 patches. Every extent has a curve or
+// the whole boundary on both sides: all 12 kept >= 1 (the two curves are 2 apart along their wall).
+TEST(MotorcycleComplex, TwoValenceThreeAxesAreKeptApart)
+{
+  const std::vector<Eigen::Vector2d> P{{0, 0}, {1, -0.6}, {1, 0.6}, {2, 0}};
+  const Built_map m = kite_prism(P, {{{0, 1, 2}}, {{1, 3, 2}}}, 1);
+  const Vertex_forms forms;
+  const MC::Motorcycle_complex mc = MC::trace_motorcycle_complex(m.points, m.tets, m.parameters, 50, &forms);
+  ASSERT_TRUE(mc.report.success) << mc.report.reason;
+  EXPECT_EQ(mc.report.singular_edges, 2u);
+  EXPECT_EQ(mc.report.blocks, 4u);
+  EXPECT_EQ(mc.report.patches, 19u);
+  EXPECT_EQ(mc.report.arcs, 30u);
+  EXPECT_EQ(mc.report.nodes, 16u);
+  EXPECT_EQ(mc.extents.extents.size(), 12u);
+  std::size_t separate = 0, two = 0;
+  for(const MC::Block_extent& e : mc.extents.extents) {
+    separate += e.separate;
+    two += e.seamless == MC::Rational(2);
+  }
+  EXPECT_EQ(separate, 12u);
+  EXPECT_EQ(two, 2u); // the two merged blocks, from one axis to the other
 }
