@@ -171,12 +171,15 @@ void expect_complex(const Built_map& m, std::size_t blocks, std::size_t patches,
   EXPECT_EQ(r.patches, patches);
   EXPECT_EQ(r.arcs, arcs);
   EXPECT_EQ(r.nodes, nodes);
+  // the same map: the split points are rounded to 2^-40 off the walls' planes
   std::size_t not_positive = 0;
   const MC::Rational after = parameter_volume(*mc.mesh, not_positive);
   EXPECT_EQ(not_positive, 0u);
   MC::Exact_map_mesh input(m.points, m.tets, m.parameters);
   std::size_t unused = 0;
-  EXPECT_EQ(after, parameter_volume(input, unused));
+  const MC::Rational before = parameter_volume(input, unused);
+  if(r.split_edges == 0) EXPECT_EQ(after, before);
+  EXPECT_NEAR(CGAL::to_double(after), CGAL::to_double(before), 1e-9);
   if(out) *out = std::move(mc);
 }
 

@@ -51,12 +51,13 @@ private:
 };
 
 // The motorcycle complex of the seamless map y_s (issue 27 step 2) with its block extents as functions
-// of the variables, traced only when the seamless map is injective; null (with the report saying why)
-// otherwise.
+// of the variables, traced only when the seamless map is injective, within `seconds` and a size limit;
+// null (with the report saying why) otherwise.
 template <class Traits>
 std::unique_ptr<motorcycle::Motorcycle_complex>
 seamless_map_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
-                     const Eigen::VectorXd& x0, const Seamless_map& seamless, motorcycle::Motorcycle_complex_report& report)
+                     const Eigen::VectorXd& x0, const Seamless_map& seamless, double seconds,
+                     motorcycle::Motorcycle_complex_report& report)
 {
   if(!seamless.success || !seamless.folds.empty()) {
     report.reason = "the seamless map is not injective";
@@ -71,8 +72,11 @@ seamless_map_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::Sparse
   std::vector<std::array<Eigen::Vector3d, 4> > parameters;
   corner_parameters(P * seamless.y + x0, parameters);
   const Reduced_map_forms forms(P, x0, tets);
+  // up to 20 times the tetrahedra (a wall across the part splits about 15 per tetrahedron it crosses),
+  // and 2 million in all (about 2 GB)
+  const double growth = (std::min)(20.0, 2e6 / double((std::max)(std::size_t(1), tets.size())));
   std::unique_ptr<motorcycle::Motorcycle_complex> mc(
-    new motorcycle::Motorcycle_complex(motorcycle::trace_motorcycle_complex(positions, tets, parameters, 20, &forms)));
+    new motorcycle::Motorcycle_complex(motorcycle::trace_motorcycle_complex(positions, tets, parameters, growth, &forms, seconds)));
   report = mc->report;
   return mc;
 }

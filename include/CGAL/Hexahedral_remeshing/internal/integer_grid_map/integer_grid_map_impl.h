@@ -44,10 +44,11 @@ namespace internal {
 // Integer_grid_map_result); false if there is none.
 template <class Traits, class Result>
 bool trace_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
-                   const Eigen::VectorXd& x0, const Seamless_map& seamless, Result& r, motorcycle::Block_extents& extents)
+                   const Eigen::VectorXd& x0, const Seamless_map& seamless, double seconds, Result& r,
+                   motorcycle::Block_extents& extents)
 {
   motorcycle::Motorcycle_complex_report report;
-  const std::unique_ptr<motorcycle::Motorcycle_complex> complex = seamless_map_complex(mesh, P, x0, seamless, report);
+  const std::unique_ptr<motorcycle::Motorcycle_complex> complex = seamless_map_complex(mesh, P, x0, seamless, seconds, report);
   auto& c = r.motorcycle_complex;
   c.traced = report.success;
   c.reason = report.success ? std::string() : report.reason;
@@ -114,7 +115,9 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   auto jump_form = [&](std::uint32_t f, int k) { return reduced.jump_form(f, k); };
   const Separation_finder<Traits> finder(mesh, matchings, cut.cut, geometry, P, x0, reduced.integer_column, flat, jump_form);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(P.cols());
-  auto trace = [&](motorcycle::Block_extents& extents) { return trace_complex(mesh, P, x0, seamless, r, extents); };
+  auto trace = [&](motorcycle::Block_extents& extents) {
+    return trace_complex(mesh, P, x0, seamless, o.quantization_time_limit, r, extents);
+  };
   const Quantization_result q = seamless.success ? quantize_map(finder, trace, H, rhs, reduced.integer_column, seamless.y, o, solver, y, r)
                                                  : Quantization_result{false};
   r.rounded_inverted_tetrahedra = count_non_positive_jacobians(geometry, P * y + x0);

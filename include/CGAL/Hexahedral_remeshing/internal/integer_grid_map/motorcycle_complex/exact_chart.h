@@ -4,7 +4,9 @@
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_EXACT_CHART_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_EXACT_CHART_H
 
-#include <CGAL/Exact_rational.h>
+#include <CGAL/Gmpq.h>
+
+#include <gmp.h>
 
 #include <algorithm>
 #include <array>
@@ -19,8 +21,39 @@ namespace motorcycle {
 
 // Exact parameter space of a seamless map: the corner values of the map are doubles, hence dyadic
 // rationals; every wall position, split point and transition below is computed exactly from them.
-typedef CGAL::Exact_rational Rational;
+typedef CGAL::Gmpq Rational;
 typedef std::array<Rational, 3> Parameter;
+
+// x rounded to the nearest multiple of 2^-bits (halves away from zero, so that rounding commutes with
+// negation and with translations by dyadic numbers of at most `bits` fractional bits: with the charts'
+// translations so, the rounded points of two charts still correspond exactly).
+// A dyadic x (a power of two below) is kept as it is: the wall's own coordinate, exact.
+inline Rational rounded_to_grid(const Rational& x, unsigned bits = 40)
+{
+  mpq_srcptr q = x.mpq();
+  if(mpz_popcount(mpq_denref(q)) == 1) return x;
+  mpz_t n, r;
+  mpz_init(n);
+  mpz_init(r);
+  mpz_mul_2exp(n, mpq_numref(q), bits);
+  mpz_tdiv_qr(n, r, n, mpq_denref(q));
+  mpz_mul_2exp(r, r, 1);
+  mpz_abs(r, r);
+  if(mpz_cmp(r, mpq_denref(q)) >= 0) {
+    if(mpq_sgn(q) > 0) mpz_add_ui(n, n, 1);
+    else mpz_sub_ui(n, n, 1);
+  }
+  Rational out;
+  mpq_ptr o = out.mpq();
+  mpq_set_num(o, n);
+  mpz_set_ui(r, 1);
+  mpz_mul_2exp(r, r, bits);
+  mpq_set_den(o, r);
+  mpq_canonicalize(o);
+  mpz_clear(n);
+  mpz_clear(r);
+  return out;
+}
 
 // A rotation of the octahedral group as a signed permutation: (R p)[i] = sign[i] * p[axis[i]].
 struct Signed_permutation

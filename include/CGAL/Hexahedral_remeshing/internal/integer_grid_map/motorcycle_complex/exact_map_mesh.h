@@ -40,7 +40,8 @@ constexpr int BOUNDARY = -2;
 
 // The tetrahedral mesh of a seamless map with exact charts, refined by edge bisections: splitting an
 // edge splits every tetrahedron around it at the same parameter ratio (transitions are affine, so the
-// ratio is the same in every chart), which keeps the mesh conforming and the map unchanged.
+// ratio is the same in every chart), which keeps the mesh conforming and the map unchanged up to the
+// rounding of the split points to 2^-40 (off the wall's plane; checked: every part stays positive).
 class Exact_map_mesh
 {
 public:
@@ -204,9 +205,12 @@ private:
   {
     Map_tetrahedron& A = tetrahedra[t];
     const int cx = corner(t, x), cy = corner(t, y);
+    // The split point, rounded to the grid of 2^-40 (walls crossing the splits of other walls would
+    // else nest rationals whose size doubles at each level). The wall's own coordinate, a double,
+    // stays exact; every chart rounds its copy alike, so the transitions still hold exactly.
     Parameter pw;
     for(std::size_t i = 0; i < 3; ++i)
-      pw[i] = A.parameter[std::size_t(cx)][i] + lambda * (A.parameter[std::size_t(cy)][i] - A.parameter[std::size_t(cx)][i]);
+      pw[i] = rounded_to_grid(A.parameter[std::size_t(cx)][i] + lambda * (A.parameter[std::size_t(cy)][i] - A.parameter[std::size_t(cx)][i]));
     Map_tetrahedron B = A;
     // the half at y: x replaced by w; across its face opposite w, the old neighbor opposite x
     B.vertex[std::size_t(cx)] = w;

@@ -64,13 +64,15 @@ inline CGAL::Sign parameter_orientation(const Map_tetrahedron& T)
 // vertices in the model. The map must be locally injective (every tetrahedron positively oriented in
 // parameter space, exactly) and put boundary faces on planes and curves on lines of its charts;
 // else the report says why and there is no complex. `maximum_growth`: the tracing stops (no complex)
-// when the split mesh has that many times the input's tetrahedra (a wall that never meets another).
+// when the split mesh has that many times the input's tetrahedra (a wall that never meets another);
+// `seconds`: or after that time.
 // With `forms` (the parameters as functions of the map's variables), the extents of the blocks too.
 // Not yet: toroidal blocks are not cut and the complex is not reduced.
 inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<double, 3> >& positions,
                                                    const std::vector<std::array<std::uint32_t, 4> >& tets,
                                                    const std::vector<std::array<Eigen::Vector3d, 4> >& parameters,
-                                                   double maximum_growth = 50, const Map_forms* forms = nullptr)
+                                                   double maximum_growth = 50, const Map_forms* forms = nullptr,
+                                                   double seconds = 60)
 {
   const auto start = std::chrono::steady_clock::now();
   Motorcycle_complex mc;
@@ -87,13 +89,17 @@ inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<
   if(r.inverted_tetrahedra > 0) r.reason = "the map is not locally injective";
   else if(curves.not_seamless > 0) r.reason = "the map is not seamless (a transition is not a rotation of the cube)";
   else {
-    Wall_tracer tracer(mesh, std::size_t(maximum_growth * double(tets.size())), forms, &tets);
+    Wall_tracer tracer(mesh, std::size_t(maximum_growth * double(tets.size())), forms, &tets, seconds);
     for(const auto& e : curves.singular) tracer.seed(e.first, e.second[0], e.second[1]);
     for(const auto& e : curves.feature) tracer.seed(e.first, e.second[0], e.second[1]);
     const bool traced = tracer.run();
     r.walls = std::size_t(tracer.walls());
     r.split_edges = tracer.split_edges;
-    if(!traced) r.reason = "the walls split the mesh past the size limit";
+    std::size_t not_positive = 0;
+    for(const Map_tetrahedron& T : mesh.tetrahedra) not_positive += traced && parameter_orientation(T) != CGAL::POSITIVE;
+    if(tracer.out_of_time) r.reason = "the walls were not traced in the time limit";
+    else if(not_positive > 0) r.reason = "a part of a split tetrahedron is not positive (the rounding of a split point)";
+    else if(!traced) r.reason = "the walls split the mesh past the size limit";
     else if(tracer.not_seamless > 0) r.reason = "a wall crossed a face that is not seamless";
     else if(r.walls != 2 * (r.singular_edges + r.feature_edges)) r.reason = "a curve edge is not on a line of its chart";
     else {

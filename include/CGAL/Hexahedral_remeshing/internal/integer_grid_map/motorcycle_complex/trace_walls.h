@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/edge_rings.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/wall_forms.h>
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <queue>
@@ -35,9 +36,14 @@ public:
   std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> > wall_planes;
 
   // `forms` and `input` (the input tetrahedra) may be null: the walls' values are then not tracked.
+  bool out_of_time = false;
+
+  // The tracing stops when the mesh has `maximum_tetrahedra` or after `seconds` (the exact split
+  // points of walls crossing walls' splits are rationals that grow: a fine graded mesh can make them
+  // costly).
   Wall_tracer(Exact_map_mesh& mesh, std::size_t maximum_tetrahedra, const Map_forms* forms = nullptr,
-              const std::vector<std::array<std::uint32_t, 4> >* input = nullptr)
-    : m_mesh(mesh), m_maximum(maximum_tetrahedra), m_forms(forms), m_input(input)
+              const std::vector<std::array<std::uint32_t, 4> >* input = nullptr, double seconds = 60)
+    : m_mesh(mesh), m_maximum(maximum_tetrahedra), m_forms(forms), m_input(input), m_seconds(seconds)
   {}
 
   // Two walls from the curve edge (x, y) of tetrahedron t (one line of its chart: two coordinates
@@ -62,13 +68,18 @@ public:
     }
   }
 
-  // Grows all walls; false if the mesh grew past the limit.
+  // Grows all walls; false if the mesh grew past the limit or the time ran out.
   bool run()
   {
-    while(!m_queue.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    for(std::size_t step = 0; !m_queue.empty(); ++step) {
       const Front f = m_queue.top();
       m_queue.pop();
       if(m_mesh.tetrahedra.size() > m_maximum) { too_large = true; return false; }
+      if(step % 1024 == 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > m_seconds) {
+        out_of_time = true;
+        return false;
+      }
       process(f);
     }
     return true;
@@ -165,32 +176,61 @@ private:
     });
   }
 
+  // Cuts tetrahedron w.tet by the wall's plane, all of it before any other wall acts there, then makes
+  // its parts' faces on the plane wall faces. Of the edges the plane crosses, the one with the oldest
+  // vertices is split first: two walls that cross the same edges would else split, in turn, the edges
+  // that the other's last split made, forever (each new vertex closer to the old edge).
   void process(const Front& w)
   {
-    const std::size_t t = w.tet;
     const Axis_plane& plane = w.carried.plane.plane;
-    std::array<CGAL::Sign, 4> s;
-    for(std::size_t c = 0; c < 4; ++c) s[c] = plane.side(m_mesh.tetrahedra[t].parameter[c]);
+    std::vector<std::size_t> parts{w.tet};
+    while(!parts.empty()) {
+      const std::size_t t = parts.back();
+      parts.pop_back();
+      std::array<CGAL::Sign, 4> s;
+      for(std::size_t c = 0; c < 4; ++c) s[c] = plane.side(m_mesh.tetrahedra[t].parameter[c]);
+      const std::array<std::size_t, 2> e = oldest_crossing_edge(t, s);
+      if(e[0] < 4) {
+        parts.push_back(t);
+        parts.push_back(split(t, e, plane));
+        continue;
+      }
+      for(int f = 0; f < 4; ++f) {
+        bool on_plane = s[std::size_t(f)] != CGAL::ZERO;
+        for(int c = 0; c < 4; ++c) on_plane = on_plane && (c == f || s[std::size_t(c)] == CGAL::ZERO);
+        if(!on_plane || m_mesh.tetrahedra[t].wall[std::size_t(f)] != NOT_A_WALL) continue;
+        Front part = w;
+        part.tet = t;
+        mark_and_continue(t, f, part);
+      }
+    }
+  }
+
+  // The corners of the edge of t with opposite signs whose newer vertex is the oldest ({4, 4} if none).
+  std::array<std::size_t, 2> oldest_crossing_edge(std::size_t t, const std::array<CGAL::Sign, 4>& s) const
+  {
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    std::array<std::size_t, 2> best{{4, 4}};
+    std::pair<std::uint32_t, std::uint32_t> age(std::uint32_t(-1), std::uint32_t(-1));
     for(std::size_t i = 0; i < 4; ++i)
       for(std::size_t j = i + 1; j < 4; ++j) {
         if(s[i] == CGAL::ZERO || s[j] == CGAL::ZERO || s[i] == s[j]) continue;
-        const Map_tetrahedron& T = m_mesh.tetrahedra[t];
-        const std::size_t k = std::size_t(plane.axis);
-        const Rational lambda = (plane.value - T.parameter[i][k]) / (T.parameter[j][k] - T.parameter[i][k]);
-        const std::uint32_t x = T.vertex[i];
-        m_mesh.split_edge(t, x, T.vertex[j], lambda);
-        ++split_edges;
-        const std::size_t half = std::size_t(m_mesh.tetrahedra[t].neighbor[std::size_t(m_mesh.corner(t, x))]);
-        push(t, w.wall, w.carried);
-        push(half, w.wall, w.carried);
-        return;
+        const auto a = std::make_pair((std::max)(T.vertex[i], T.vertex[j]), (std::min)(T.vertex[i], T.vertex[j]));
+        if(a < age) { age = a; best = {{i, j}}; }
       }
-    for(int f = 0; f < 4; ++f) {
-      bool on_plane = s[std::size_t(f)] != CGAL::ZERO;
-      for(int c = 0; c < 4; ++c) on_plane = on_plane && (c == f || s[std::size_t(c)] == CGAL::ZERO);
-      if(!on_plane || m_mesh.tetrahedra[t].wall[std::size_t(f)] != NOT_A_WALL) continue;
-      mark_and_continue(t, f, w);
-    }
+    return best;
+  }
+
+  // Splits edge e of t where the plane crosses it; returns the part of t at the edge's second end.
+  std::size_t split(std::size_t t, const std::array<std::size_t, 2>& e, const Axis_plane& plane)
+  {
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    const std::size_t k = std::size_t(plane.axis);
+    const Rational lambda = (plane.value - T.parameter[e[0]][k]) / (T.parameter[e[1]][k] - T.parameter[e[0]][k]);
+    const std::uint32_t x = T.vertex[e[0]];
+    m_mesh.split_edge(t, x, T.vertex[e[1]], lambda);
+    ++split_edges;
+    return std::size_t(m_mesh.tetrahedra[t].neighbor[std::size_t(m_mesh.corner(t, x))]);
   }
 
   void record(std::size_t t, int wall, const Plane_form& p)
@@ -228,6 +268,7 @@ private:
   std::size_t m_maximum;
   const Map_forms* m_forms;
   const std::vector<std::array<std::uint32_t, 4> >* m_input;
+  double m_seconds;
   int m_walls = 0;
   std::uint64_t m_order = 0;
   std::priority_queue<Front, std::vector<Front>, Later> m_queue;
