@@ -166,21 +166,40 @@ struct Integer_grid_map_complex
   bool traced = false;
   /// Why it was not traced, or how its program ended.
   std::string reason;
-  /// Blocks, patches, arcs and nodes of the complex (not reduced).
-  std::size_t blocks = 0, patches = 0, arcs = 0, nodes = 0;
-  /// Tetrahedra of the map's mesh once split by the walls, and the edges split.
-  std::size_t split_tetrahedra = 0, split_edges = 0;
-  /// Block extents in the program, those kept >= 1, those left out (a side whose position is unknown).
-  std::size_t extents = 0, separated_extents = 0, skipped_extents = 0;
-  /// Folded tetrahedra of the rounded map, of the program's map.
-  std::size_t folds_after_rounding = 0, folds_after_program = 0;
-  /// Integer variables and constraints of the last program, programs solved (0: the rounded values
-  /// kept every block and did not fold), objective of the last one.
-  std::size_t program_variables = 0, program_constraints = 0;
+  /// Blocks of the complex (not reduced).
+  std::size_t blocks = 0;
+  /// Patches (block faces).
+  std::size_t patches = 0;
+  /// Arcs (patch edges).
+  std::size_t arcs = 0;
+  /// Nodes (arc ends).
+  std::size_t nodes = 0;
+  /// Tetrahedra of the map's mesh once split by the walls.
+  std::size_t split_tetrahedra = 0;
+  /// Edges split by the walls.
+  std::size_t split_edges = 0;
+  /// Block extents in the program (a block's length along one axis of its chart).
+  std::size_t extents = 0;
+  /// Extents kept >= 1 (two boundary sides, two curves, or zero at a fold).
+  std::size_t separated_extents = 0;
+  /// Extents left out (a side whose position is unknown, a block that is not a box).
+  std::size_t skipped_extents = 0;
+  /// Folded tetrahedra of the rounded map.
+  std::size_t folds_after_rounding = 0;
+  /// Folded tetrahedra of the last program's map.
+  std::size_t folds_after_program = 0;
+  /// Integer variables of the last program.
+  std::size_t program_variables = 0;
+  /// Constraints of the last program.
+  std::size_t program_constraints = 0;
+  /// Programs solved (0: the rounded values kept every block and did not fold).
   int programs = 0;
+  /// Objective of the last program.
   double objective = 0;
-  /// Seconds of the tracing (with the extents), of the programs (Cbc).
-  double seconds = 0, program_seconds = 0;
+  /// Seconds of the tracing (with the extents).
+  double seconds = 0;
+  /// Seconds of the programs (Cbc).
+  double program_seconds = 0;
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
