@@ -375,3 +375,31 @@ TEST(MotorcycleComplex, TwoValenceThreeAxesAreKeptApart)
   EXPECT_EQ(separate, 12u);
   EXPECT_EQ(two, 2u); // the two merged blocks, from one axis to the other
 }
+
+// A toroidal block: the box [0,4] x [0,1] x [0,1] with its ends x = 0 and x = 4 glued (the map jumps by
+// 4 there: a translation, no rotation, so no singular edge). The feature edges run around the ring in
+// the boundary planes: no wall enters the part, which stays one block whose four faces are annuli
+// bounded by four closed arcs without a node. The block is not cut yet: its extents across the ring
+// (y, z) are known and kept apart, the one around it is left out.
+TEST(MotorcycleComplex, ToroidalBlockIsOneBlockWithClosedArcs)
+{
+  Built_map m = kuhn_cells(box_cells(4, 1, 1), 1.0);
+  std::map<std::array<double, 3>, std::uint32_t> at;
+  for(std::uint32_t v = 0; v < m.points.size(); ++v) at.emplace(m.points[v], v);
+  for(auto& t : m.tets)
+    for(auto& v : t)
+      if(m.points[v][0] == 4.0) v = at.at({{0.0, m.points[v][1], m.points[v][2]}});
+  const Vertex_forms forms;
+  const MC::Motorcycle_complex mc = MC::trace_motorcycle_complex(m.points, m.tets, m.parameters, 50, &forms);
+  ASSERT_TRUE(mc.report.success) << mc.report.reason;
+  EXPECT_EQ(mc.report.singular_edges, 0u);
+  EXPECT_EQ(mc.report.feature_edges, 16u);
+  EXPECT_EQ(mc.report.split_edges, 0u);
+  EXPECT_EQ(mc.report.blocks, 1u);
+  EXPECT_EQ(mc.report.patches, 4u);
+  EXPECT_EQ(mc.report.arcs, 4u);
+  EXPECT_EQ(mc.report.nodes, 0u);
+  EXPECT_EQ(mc.extents.extents.size(), 2u);
+  EXPECT_EQ(mc.extents.sides_without_form, 1u);
+  for(const MC::Block_extent& e : mc.extents.extents) EXPECT_TRUE(e.separate);
+}
