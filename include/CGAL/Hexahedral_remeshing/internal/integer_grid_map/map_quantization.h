@@ -75,11 +75,14 @@ void report_complex_quantization(const motorcycle::Complex_quantization_report& 
 }
 
 // The quantization on the motorcycle complex (complex_quantizer.h); true if its map is final: the
-// program's map does not fold, or the rounded one does not, or no other quantizer is asked.
+// program's map does not fold, or the rounded one does not, or no other quantizer is asked, or the
+// seamless map has `seamless_folds` of its own (which no program removes: the rounded map is kept,
+// and not rounded a second time by the separating quantizer).
 template <class Finder, class Options, class Result>
 bool quantize_on_complex(const Finder& finder, const motorcycle::Complex_quantizer::Trace& trace, const Eigen::SparseMatrix<double>& H,
                          const Eigen::VectorXd& rhs, const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
-                         const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r, Quantization_result& q)
+                         std::size_t seamless_folds, const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y,
+                         Result& r, Quantization_result& q)
 {
   typedef decltype(r.quantization) Path;
   motorcycle::Complex_quantizer quantizer(trace, seamless, [&](const Eigen::VectorXd& v) { return finder.folded(v); });
@@ -90,6 +93,10 @@ bool quantize_on_complex(const Finder& finder, const motorcycle::Complex_quantiz
   r.folds_after_rounding = r.folds_after_separation = quantizer.report.folds_after_rounding;
   if(!q.success || quantizer.report.used || quantizer.report.folds_after_rounding == 0 || o.quantization == Path::MOTORCYCLE_COMPLEX)
     return true;
+  if(seamless_folds > 0) {
+    r.quantization_reason = "the seamless map folds before any rounding (the rounded map kept)";
+    return true;
+  }
   solver.unfix_all();
   return false;
 }
@@ -97,12 +104,12 @@ bool quantize_on_complex(const Finder& finder, const motorcycle::Complex_quantiz
 // The quantization of the map (`Options`: Map_options; `Result`: Integer_grid_map_result): greedy
 // rounding; where it folds, corrected on the motorcycle complex of the seamless map if there is one
 // (`trace`: Complex_quantizer::Trace); then, where the map still folds, the
-// separating quantizer with `seamless` (the untangled seamless map) as its reference; the reports
-// copied into `r`.
+// separating quantizer with `seamless` (the untangled seamless map) as its reference, unless the
+// seamless map has `seamless_folds` of its own; the reports copied into `r`.
 template <class Finder, class Options, class Result>
 Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex_quantizer::Trace& trace, const Eigen::SparseMatrix<double>& H,
                                  const Eigen::VectorXd& rhs, const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
-                                 const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r)
+                                 std::size_t seamless_folds, const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r)
 {
   typedef decltype(r.quantization) Path;
   if(o.quantization == Path::GREEDY_ROUNDING) {
@@ -110,13 +117,15 @@ Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex
     return greedy.quantize(H, rhs, integer_column, solver, y);
   }
   Quantization_result q;
-  if(o.quantization != Path::SEPARATION_PROGRAM && quantize_on_complex(finder, trace, H, rhs, integer_column, seamless, o, solver, y, r, q))
+  if(o.quantization != Path::SEPARATION_PROGRAM &&
+     quantize_on_complex(finder, trace, H, rhs, integer_column, seamless, seamless_folds, o, solver, y, r, q))
     return q;
   Separating_quantizer separating(
     [&](const Eigen::VectorXd& reference, const Eigen::VectorXd& v) { return finder.violated(reference, v); },
     [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
   separating.time_limit = o.quantization_time_limit;
   separating.seamless = seamless;
+  separating.seamless_folds = seamless_folds;
   q = separating.quantize(H, rhs, integer_column, solver, y);
   const Separation_report& sr = separating.report;
   r.quantization = sr.used ? Path::SEPARATION_PROGRAM : Path::GREEDY_ROUNDING;
