@@ -376,11 +376,29 @@ TEST(MotorcycleComplex, TwoValenceThreeAxesAreKeptApart)
   EXPECT_EQ(two, 2u); // the two merged blocks, from one axis to the other
 }
 
+// The corner values of a map with jumps as functions of y = the vertices' coordinates in the model: a
+// corner's value is its vertex's variable plus the jump of its tetrahedron's chart there (a constant),
+// so the translations between charts are those constants.
+struct Chart_forms : MC::Map_forms
+{
+  const Built_map& map;
+  explicit Chart_forms(const Built_map& m) : map(m) {}
+  CGAL::Hexahedral_remeshing::internal::Linear_form corner(std::uint32_t t, std::uint32_t v, int axis) const override
+  {
+    CGAL::Hexahedral_remeshing::internal::Linear_form f;
+    f.terms.emplace_back(Eigen::Index(3 * v + std::uint32_t(axis)), 1.0);
+    for(std::size_t c = 0; c < 4; ++c)
+      if(map.tets[t][c] == v) f.constant = map.parameters[t][c][std::size_t(axis)] - map.points[v][std::size_t(axis)];
+    return f;
+  }
+};
+
 // A toroidal block: the box [0,4] x [0,1] x [0,1] with its ends x = 0 and x = 4 glued (the map jumps by
 // 4 there: a translation, no rotation, so no singular edge). The feature edges run around the ring in
 // the boundary planes: no wall enters the part, which stays one block whose four faces are annuli
-// bounded by four closed arcs without a node. The block is not cut yet: its extents across the ring
-// (y, z) are known and kept apart, the one around it is left out.
+// bounded by four closed arcs without a node. Its extents across the ring (y, z) are 1, between
+// boundary sides, kept apart; the one around it (x) is the ring's period, 4 (the jump), kept >= 1:
+// it is what a wall cutting the ring would give between its two sides.
 TEST(MotorcycleComplex, ToroidalBlockIsOneBlockWithClosedArcs)
 {
   Built_map m = kuhn_cells(box_cells(4, 1, 1), 1.0);
@@ -389,7 +407,7 @@ TEST(MotorcycleComplex, ToroidalBlockIsOneBlockWithClosedArcs)
   for(auto& t : m.tets)
     for(auto& v : t)
       if(m.points[v][0] == 4.0) v = at.at({{0.0, m.points[v][1], m.points[v][2]}});
-  const Vertex_forms forms;
+  const Chart_forms forms(m);
   const MC::Motorcycle_complex mc = MC::trace_motorcycle_complex(m.points, m.tets, m.parameters, 50, &forms);
   ASSERT_TRUE(mc.report.success) << mc.report.reason;
   EXPECT_EQ(mc.report.singular_edges, 0u);
@@ -399,7 +417,22 @@ TEST(MotorcycleComplex, ToroidalBlockIsOneBlockWithClosedArcs)
   EXPECT_EQ(mc.report.patches, 4u);
   EXPECT_EQ(mc.report.arcs, 4u);
   EXPECT_EQ(mc.report.nodes, 0u);
-  EXPECT_EQ(mc.extents.extents.size(), 2u);
-  EXPECT_EQ(mc.extents.sides_without_form, 1u);
-  for(const MC::Block_extent& e : mc.extents.extents) EXPECT_TRUE(e.separate);
+  ASSERT_EQ(mc.extents.extents.size(), 3u);
+  EXPECT_EQ(mc.extents.sides_without_form, 0u);
+  EXPECT_EQ(mc.extents.not_boxes, 0u);
+  EXPECT_EQ(mc.extents.rings, 1u);
+  Eigen::VectorXd y(Eigen::Index(3 * m.points.size()));
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    for(int k = 0; k < 3; ++k) y[Eigen::Index(3 * v + std::size_t(k))] = m.points[v][std::size_t(k)];
+  std::array<double, 3> extent{{0, 0, 0}};
+  for(const MC::Block_extent& e : mc.extents.extents) {
+    EXPECT_TRUE(e.separate);
+    extent[std::size_t(e.axis)] = e.form(y);
+    EXPECT_EQ(MC::Rational(e.form(y)), e.seamless);
+    // around the ring: the jump alone, whatever the vertices' positions
+    if(e.axis == 0) for(const auto& term : e.form.terms) EXPECT_EQ(term.second, 0.0);
+  }
+  EXPECT_EQ(extent[0], 4.0);
+  EXPECT_EQ(extent[1], 1.0);
+  EXPECT_EQ(extent[2], 1.0);
 }

@@ -42,6 +42,7 @@ struct Block_extents
   std::vector<Block_extent> extents;
   std::size_t sides_without_form = 0; // sides whose position is not known as a function (skipped)
   std::size_t not_boxes = 0;          // blocks whose sides are not on two planes per axis (skipped)
+  std::size_t rings = 0;              // extents around a toroidal block: its period (kept >= 1)
 };
 
 namespace extents_detail {
@@ -66,10 +67,22 @@ struct Side
   Linear_form form;
 };
 
+// A toroidal block along one axis of its chart: developed around the ring, the block comes back onto
+// itself shifted by its period along that axis (the translation part of the transitions composed
+// around the ring). A wall cutting the ring would bound a box whose extent between the wall's two
+// sides is that period, whatever the wall's position: so the period is the extent, without the cut.
+struct Ring
+{
+  bool found = false;
+  Rational period; // > 0
+  Linear_form form;
+};
+
 struct Box
 {
-  bool is_box = true; // every face of a side on one plane
+  bool is_box = true; // every face of a side on one plane, no rotation around a ring
   std::array<Side, 3> low, high;
+  std::array<Ring, 3> ring;
   std::set<std::uint32_t> input;
 };
 
@@ -103,13 +116,24 @@ public:
       for(int k = 0; k < 3; ++k) {
         const Side& lo = boxes[b].low[std::size_t(k)];
         const Side& hi = boxes[b].high[std::size_t(k)];
-        if(!lo.found || !hi.found || !lo.has_form || !hi.has_form) { ++out.sides_without_form; continue; }
+        const Ring& ring = boxes[b].ring[std::size_t(k)];
         Block_extent e;
         e.block = std::uint32_t(b);
         e.axis = k;
-        e.seamless = hi.value - lo.value;
-        e.form = hi.form.plus(lo.form, -1.0);
-        e.separate = lo.critical() && hi.critical();
+        if(ring.found && !lo.found && !hi.found) {
+          // a ring of zero period would flatten the whole block
+          e.seamless = ring.period;
+          e.form = ring.form;
+          e.separate = true;
+          ++out.rings;
+        } else if(!lo.found || !hi.found || !lo.has_form || !hi.has_form || ring.found) {
+          ++out.sides_without_form;
+          continue;
+        } else {
+          e.seamless = hi.value - lo.value;
+          e.form = hi.form.plus(lo.form, -1.0);
+          e.separate = lo.critical() && hi.critical();
+        }
         e.input_tetrahedra.assign(boxes[b].input.begin(), boxes[b].input.end());
         out.extents.push_back(std::move(e));
       }
@@ -118,32 +142,72 @@ public:
   }
 
 private:
+  // Breadth-first over the block's tetrahedra (across faces that are not walls), each posed in the
+  // root's chart; a face between two tetrahedra already posed closes a loop: different poses there
+  // are a ring (add_ring()).
   void develop(std::size_t root, extents_detail::Box& box, std::vector<char>& seen, Block_extents& out) const
   {
     using namespace extents_detail;
-    std::deque<std::pair<std::size_t, Pose> > queue;
-    queue.emplace_back(root, Pose());
+    std::deque<std::size_t> queue{root};
+    std::map<std::size_t, Pose> poses{{root, Pose()}};
     seen[root] = 1;
     while(!queue.empty()) {
-      const auto [t, pose] = queue.front();
+      const std::size_t t = queue.front();
       queue.pop_front();
+      const Pose pose = poses.at(t);
       const Map_tetrahedron& T = m_mesh.tetrahedra[t];
       box.input.insert(T.origin);
       for(int f = 0; f < 4; ++f) {
         if(T.wall[std::size_t(f)] != NOT_A_WALL) { read_side(t, f, pose, box); continue; }
         const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
+        Pose next;
+        if(!pose_across(t, f, pose, next)) {
+          if(!seen[n]) ++out.sides_without_form;
+          seen[n] = 1;
+          continue;
+        }
+        const auto known = poses.find(n);
+        if(known != poses.end()) { add_ring(known->second, next, box); continue; }
         if(seen[n]) continue;
         seen[n] = 1;
-        if(m_mesh.tetrahedra[n].origin == T.origin) { queue.emplace_back(n, pose); continue; }
-        const Chart_transition* c = m_mesh.transition(t, f);
-        if(!c) { ++out.sides_without_form; continue; }
-        Pose next;
-        next.chart = pose.chart.then(*c);
-        const std::array<Linear_form, 3> tf = translation_forms(m_forms, m_input, T.origin, m_mesh.tetrahedra[n].origin, *c);
-        for(std::size_t i = 0; i < 3; ++i)
-          next.translation[i] = pose.translation[std::size_t(c->R.axis[i])].scaled(double(c->R.sign[i])).plus(tf[i], 1.0);
-        queue.emplace_back(n, next);
+        poses.emplace(n, next);
+        queue.push_back(n);
       }
+    }
+  }
+
+  // The pose of the neighbor of t across face f; false if the face is not seamless.
+  bool pose_across(std::size_t t, int f, const extents_detail::Pose& pose, extents_detail::Pose& next) const
+  {
+    const Map_tetrahedron& T = m_mesh.tetrahedra[t];
+    const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
+    if(m_mesh.tetrahedra[n].origin == T.origin) { next = pose; return true; }
+    const Chart_transition* c = m_mesh.transition(t, f);
+    if(!c) return false;
+    next.chart = pose.chart.then(*c);
+    const std::array<Linear_form, 3> tf = translation_forms(m_forms, m_input, T.origin, m_mesh.tetrahedra[n].origin, *c);
+    for(std::size_t i = 0; i < 3; ++i)
+      next.translation[i] = pose.translation[std::size_t(c->R.axis[i])].scaled(double(c->R.sign[i])).plus(tf[i], 1.0);
+    return true;
+  }
+
+  // Two poses of one tetrahedron, q = R q_root + t1 and q = R q_root' + t2: the root comes back shifted
+  // by q_root' - q_root = R^-1 (t1 - t2), the block's period (the shortest one found is kept). With
+  // two rotations the block turns around the ring: not a box.
+  static void add_ring(const extents_detail::Pose& known, const extents_detail::Pose& again, extents_detail::Box& box)
+  {
+    if(!(known.chart.R == again.chart.R)) { box.is_box = false; return; }
+    for(std::size_t i = 0; i < 3; ++i) {
+      if(known.chart.t[i] == again.chart.t[i]) continue;
+      const int s = known.chart.R.sign[i];
+      Rational period = s > 0 ? again.chart.t[i] - known.chart.t[i] : known.chart.t[i] - again.chart.t[i];
+      Linear_form form = again.translation[i].plus(known.translation[i], -1.0).scaled(double(s));
+      if(period < 0) { period = -period; form = form.scaled(-1.0); }
+      extents_detail::Ring& ring = box.ring[std::size_t(known.chart.R.axis[i])];
+      if(ring.found && !(period < ring.period)) continue;
+      ring.found = true;
+      ring.period = period;
+      ring.form = form;
     }
   }
 

@@ -67,7 +67,8 @@ inline CGAL::Sign parameter_orientation(const Map_tetrahedron& T)
 // when the split mesh has that many times the input's tetrahedra (a wall that never meets another);
 // `seconds`: or after that time.
 // With `forms` (the parameters as functions of the map's variables), the extents of the blocks too.
-// Not yet: toroidal blocks are not cut and the complex is not reduced.
+// A toroidal block is not cut by a wall: its extent around the ring is its period, which is what a
+// cutting wall's two sides would be apart (block_extents.h). Not yet: the complex is not reduced.
 inline Motorcycle_complex trace_motorcycle_complex(const std::vector<std::array<double, 3> >& positions,
                                                    const std::vector<std::array<std::uint32_t, 4> >& tets,
                                                    const std::vector<std::array<Eigen::Vector3d, 4> >& parameters,
