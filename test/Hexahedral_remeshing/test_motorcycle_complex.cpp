@@ -346,6 +346,59 @@ TEST(MotorcycleComplex, BlockExtentsOfTheLPrism)
   EXPECT_EQ(separate, 5u);
 }
 
+// QGP3D's separation through stacked blocks: in the L-prism, the corner block and each arm are stacked
+// along the arm, between two boundary sheets (the corner's outer face and the arm's end), through the
+// wall between them, which is no entity. Neither block alone has two critical sides, but their two
+// extents zero would merge the sheets: with every extent zero, exactly these two chains (corner x + arm
+// x, corner y + other arm y), each 2 long in the map; with the arms' extents 1, none.
+TEST(MotorcycleComplex, ZeroLengthPathsOfTheLPrism)
+{
+  const Built_map m = kuhn_cells(l_cells(), 0.5);
+  const Vertex_forms forms;
+  const MC::Motorcycle_complex mc = MC::trace_motorcycle_complex(m.points, m.tets, m.parameters, 50, &forms);
+  ASSERT_TRUE(mc.report.success) << mc.report.reason;
+  const std::vector<MC::Block_extent>& extents = mc.extents.extents;
+  ASSERT_EQ(extents.size(), 9u);
+  Eigen::VectorXd y(Eigen::Index(3 * m.points.size()));
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    for(int k = 0; k < 3; ++k) y[Eigen::Index(3 * v + std::size_t(k))] = m.points[v][std::size_t(k)];
+  const std::vector<std::vector<std::uint32_t> > paths = MC::zero_length_paths(mc.extents, std::vector<double>(extents.size(), 0.0));
+  ASSERT_EQ(paths.size(), 2u);
+  std::set<std::uint32_t> arms;
+  for(const auto& path : paths) {
+    ASSERT_EQ(path.size(), 2u);
+    EXPECT_NE(extents[path[0]].block, extents[path[1]].block);
+    double length = 0;
+    for(std::uint32_t i : path) {
+      length += extents[i].form(y);
+      EXPECT_FALSE(extents[i].separate);
+    }
+    EXPECT_DOUBLE_EQ(length, 2.0);
+    // one end of each chain is the outer face of the corner block, the other the end of an arm
+    EXPECT_TRUE(extents[path[0]].critical[0] || extents[path[0]].critical[1]);
+    EXPECT_TRUE(extents[path[1]].critical[0] || extents[path[1]].critical[1]);
+    for(std::uint32_t i : path) arms.insert(i);
+  }
+  EXPECT_EQ(arms.size(), 4u); // the corner's two extents and one of each arm
+  // the corner block is in both chains; with the arms' extents 1 (or the corner's), no chain is left
+  const std::uint32_t corner = extents[paths[0][0]].block == extents[paths[1][0]].block ||
+                                   extents[paths[0][0]].block == extents[paths[1][1]].block
+                                 ? extents[paths[0][0]].block
+                                 : extents[paths[0][1]].block;
+  for(bool arm : {true, false}) {
+    std::vector<double> values(extents.size(), 0.0);
+    std::size_t ones = 0;
+    for(std::uint32_t i : arms)
+      if((extents[i].block != corner) == arm) { values[i] = 1.0; ++ones; }
+    EXPECT_EQ(ones, 2u);
+    EXPECT_TRUE(MC::zero_length_paths(mc.extents, values).empty());
+  }
+  // one arm 1, the other 0: one chain left
+  std::vector<double> values(extents.size(), 0.0);
+  values[extents[paths[0][0]].block == corner ? paths[0][1] : paths[0][0]] = 1.0;
+  EXPECT_EQ(MC::zero_length_paths(mc.extents, values).size(), 1u);
+}
+
 // Two valence-3 axes: the rhombus of two triangles, each in three kites. The spoke of each axis
 // towards the shared side goes on straight through the side's midpoint (four kites there) to the other
 // axis: one wall joins the two curves. The kites on either side of the shared side make one block

@@ -104,7 +104,7 @@ inline std::string complex_summary(const CGAL::Hexahedral_remeshing::Integer_gri
   std::ostringstream os;
   os << c.blocks << " blocks, " << c.patches << " patches, " << c.arcs << " arcs, " << c.nodes << " nodes ("
      << c.split_edges << " edges split, " << c.seconds << " s); " << c.extents << " block extents (" << c.separated_extents
-     << " kept >= 1, " << c.skipped_extents << " left out), ";
+     << " kept >= 1, " << c.skipped_extents << " left out, " << c.separated_paths << " zero-length paths kept >= 1), ";
   if(c.programs == 0) os << "the rounded values keep every block";
   else
     os << c.programs << " program(s) of " << c.program_variables << " variables and " << c.program_constraints
@@ -178,6 +178,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("split_edges", m.motorcycle_complex.split_edges)
       .value("extents", m.motorcycle_complex.extents)
       .value("separated_extents", m.motorcycle_complex.separated_extents)
+      .value("separated_paths", m.motorcycle_complex.separated_paths)
       .value("skipped_extents", m.motorcycle_complex.skipped_extents)
       .value("folds_after_rounding", m.motorcycle_complex.folds_after_rounding)
       .value("folds_after_program", m.motorcycle_complex.folds_after_program)

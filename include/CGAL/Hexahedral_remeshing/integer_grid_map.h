@@ -182,6 +182,9 @@ struct Integer_grid_map_complex
   std::size_t extents = 0;
   /// Extents kept >= 1 (two boundary sides, two curves, or zero at a fold).
   std::size_t separated_extents = 0;
+  /// Chains of blocks stacked along one direction, all of zero extent, between two sides that must stay
+  /// apart (QGP3D's zero-length paths), kept >= 1 in sum.
+  std::size_t separated_paths = 0;
   /// Extents left out (a side whose position is unknown, a block that is not a box).
   std::size_t skipped_extents = 0;
   /// Folded tetrahedra of the rounded map.

@@ -64,6 +64,7 @@ void report_complex_quantization(const motorcycle::Complex_quantization_report& 
   c.traced = c.traced && q.traced;
   c.extents = q.extents;
   c.separated_extents = q.separated;
+  c.separated_paths = q.paths;
   c.skipped_extents = q.skipped_extents;
   c.folds_after_rounding = q.folds_after_rounding;
   c.folds_after_program = q.folds;

@@ -9,9 +9,11 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <set>
 #include <utility>
@@ -35,6 +37,11 @@ struct Block_extent
   Linear_form form;
   bool separate = false;
   std::vector<std::uint32_t> input_tetrahedra; // the input tetrahedra the block overlaps
+  // Each side (0: low, 1: high) is critical if it is wholly boundary or on a singular curve; the
+  // extents of the blocks across it, along the same direction: (extent index, entered through its
+  // low side).
+  std::array<bool, 2> critical{{false, false}};
+  std::array<std::vector<std::pair<std::uint32_t, bool> >, 2> neighbors;
 };
 
 struct Block_extents
@@ -109,8 +116,10 @@ public:
     Block_extents out;
     std::vector<Box> boxes(m_elements.blocks);
     std::vector<char> seen(m_mesh.tetrahedra.size(), 0);
+    m_face_sides.clear();
     for(std::size_t t = 0; t < m_mesh.tetrahedra.size(); ++t)
       if(!seen[t]) develop(t, boxes[m_elements.block_of_tetrahedron[t]], seen, out);
+    std::map<std::pair<std::uint32_t, int>, std::uint32_t> extent_of;
     for(std::size_t b = 0; b < boxes.size(); ++b) {
       if(!boxes[b].is_box) { ++out.not_boxes; continue; }
       for(int k = 0; k < 3; ++k) {
@@ -134,14 +143,42 @@ public:
           e.form = hi.form.plus(lo.form, -1.0);
           e.separate = lo.critical() && hi.critical();
         }
+        e.critical = {{lo.critical(), hi.critical()}};
         e.input_tetrahedra.assign(boxes[b].input.begin(), boxes[b].input.end());
+        extent_of[std::make_pair(std::uint32_t(b), k)] = std::uint32_t(out.extents.size());
         out.extents.push_back(std::move(e));
       }
     }
+    link_sides(extent_of, out);
     return out;
   }
 
 private:
+  // One side of a block seen from a face of a wall: the block, the axis of its chart, low or high.
+  struct Face_side
+  {
+    std::uint32_t block;
+    int axis;
+    bool low;
+  };
+
+  // The extents on either side of each wall face are neighbors (each pair once).
+  void link_sides(const std::map<std::pair<std::uint32_t, int>, std::uint32_t>& extent_of, Block_extents& out) const
+  {
+    std::set<std::array<std::uint32_t, 4> > links;
+    for(const auto& face : m_face_sides) {
+      if(face.second.size() != 2) continue;
+      const Face_side& a = face.second[0];
+      const Face_side& b = face.second[1];
+      const auto ea = extent_of.find(std::make_pair(a.block, a.axis));
+      const auto eb = extent_of.find(std::make_pair(b.block, b.axis));
+      if(ea == extent_of.end() || eb == extent_of.end()) continue;
+      links.insert({{ea->second, std::uint32_t(a.low), eb->second, std::uint32_t(b.low)}});
+      links.insert({{eb->second, std::uint32_t(b.low), ea->second, std::uint32_t(a.low)}});
+    }
+    for(const auto& l : links) out.extents[l[0]].neighbors[l[1] ? 0 : 1].emplace_back(l[2], l[3] != 0);
+  }
+
   // Breadth-first over the block's tetrahedra (across faces that are not walls), each posed in the
   // root's chart; a face between two tetrahedra already posed closes a loop: different poses there
   // are a ring (add_ring()).
@@ -260,6 +297,13 @@ private:
     const Map_tetrahedron& T = m_mesh.tetrahedra[t];
     const bool low = (pose.chart.R.sign[k] > 0) == (p.plane.side(T.parameter[std::size_t(f)]) == CGAL::POSITIVE);
     extents_detail::Side& side = low ? box.low[K] : box.high[K];
+    if(!boundary) {
+      std::array<std::uint32_t, 3> key;
+      for(int i = 0, j = 0; i < 4; ++i)
+        if(i != f) key[std::size_t(j++)] = T.vertex[std::size_t(i)];
+      std::sort(key.begin(), key.end());
+      m_face_sides[key].push_back(Face_side{m_elements.block_of_tetrahedron[t], int(K), low});
+    }
     ++side.faces;
     side.boundary_faces += boundary;
     side.on_curve = side.on_curve || touches_singular_edge(t, f);
@@ -280,7 +324,40 @@ private:
   const std::vector<std::array<Eigen::Vector3d, 4> >& m_parameters;
   const std::map<std::pair<int, std::uint32_t>, std::vector<Plane_form> >& m_wall_planes;
   const std::set<std::pair<std::uint32_t, std::uint32_t> >& m_singular;
+  mutable std::map<std::array<std::uint32_t, 3>, std::vector<Face_side> > m_face_sides; // wall faces
 };
+
+// QGP3D's separation on the blocks: chains of blocks stacked along one direction whose extents are
+// all zero in `values` (one per extent; NaN: unknown, not crossed) and that join two critical sides
+// (the two ends would merge: two boundary sheets, two curves, or one of each). Each chain is returned
+// once, as the indices of its extents (at least two: a single block with two critical sides is
+// `separate` already), searched from every critical side within `maximum_length` blocks.
+inline std::vector<std::vector<std::uint32_t> > zero_length_paths(const Block_extents& extents, const std::vector<double>& values,
+                                                                  std::size_t maximum_length = 16)
+{
+  std::set<std::vector<std::uint32_t> > found;
+  std::vector<std::uint32_t> path;
+  auto zero = [&](std::uint32_t i) { return values[i] == values[i] && values[i] < 0.5; };
+  // enter extent i through side `from` (0 low, 1 high), leave through the other one
+  std::function<void(std::uint32_t, int)> walk = [&](std::uint32_t i, int from) {
+    path.push_back(i);
+    const Block_extent& e = extents.extents[i];
+    const int exit = 1 - from;
+    if(e.critical[std::size_t(exit)] && path.size() >= 2) {
+      std::vector<std::uint32_t> key = path;
+      std::sort(key.begin(), key.end());
+      found.insert(key);
+    } else if(path.size() < maximum_length) {
+      for(const auto& n : e.neighbors[std::size_t(exit)])
+        if(zero(n.first) && std::find(path.begin(), path.end(), n.first) == path.end()) walk(n.first, n.second ? 0 : 1);
+    }
+    path.pop_back();
+  };
+  for(std::uint32_t i = 0; i < extents.extents.size(); ++i)
+    for(int side = 0; side < 2; ++side)
+      if(zero(i) && extents.extents[i].critical[std::size_t(side)]) walk(i, side);
+  return std::vector<std::vector<std::uint32_t> >(found.begin(), found.end());
+}
 
 } // namespace motorcycle
 } // namespace internal

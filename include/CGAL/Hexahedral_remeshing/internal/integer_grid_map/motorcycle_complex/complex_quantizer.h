@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,7 @@ struct Complex_quantization_report
   std::string reason;      // why not, or how it ended
   Motorcycle_complex_report complex;
   std::size_t extents = 0, separated = 0;      // block extents in the program, those kept >= 1
+  std::size_t paths = 0;                        // chains of zero extents between critical sides, kept >= 1
   std::size_t skipped_extents = 0;             // sides without a known form, not boxes, forms off the map
   std::size_t variables = 0, constraints = 0;  // of the last program
   int rounds = 0;                               // programs solved
@@ -48,9 +51,11 @@ struct Complex_quantization_report
 // >= 1), one integer program (Cbc) moves as few integer values as it can (sum |z - z_rounded|
 // + 1/4 |z - z_seamless|) to satisfy every extent, and the continuous variables are solved with the
 // integer ones held (the re-embedding: patch sides equal by construction, the arcs being those of one
-// map). Where that map still folds, the zero extents of the blocks with folded tetrahedra are kept
-// apart too (lazily, up to `maximum_rounds` programs). The program's map is kept only if it does not
-// fold; else the rounded one (the caller then tries the separation around the folds).
+// map). Where a map folds, QGP3D's separation is added lazily: every chain of blocks stacked along
+// one direction whose extents are all zero and that joins two critical sides (zero_length_paths())
+// gets sum >= 1, and the zero extents of the blocks with folded tetrahedra are kept apart too (up to
+// `maximum_rounds` programs). The program's map is kept only if it does not fold; else the rounded one
+// (the caller then tries the separation around the folds).
 class Complex_quantizer : public Quantizer
 {
 public:
@@ -83,7 +88,9 @@ public:
     if(!m_trace(m_extents)) { report.reason = "no motorcycle complex"; return q; }
     report.traced = true;
     const std::vector<Block_extent*> extents = usable_extents(integer);
-    if(broken_extents(extents, y) == 0 && separate_zero_extents_at(extents, folded, y) == 0) {
+    const std::size_t broken = broken_extents(extents, y);
+    const std::size_t zero_at_folds = separate_zero_extents_at(extents, folded, y);
+    if(broken + zero_at_folds + add_zero_length_paths(extents, y) == 0) {
       report.reason = "the rounded map keeps every block";
       return q;
     }
@@ -121,7 +128,8 @@ private:
       report.folds = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
       if(report.folds == 0) { report.used = true; report.reason = "no fold"; return; }
       if(report.rounds == maximum_rounds || seconds_left <= 0) { report.reason = "folds left after the last program"; return; }
-      if(separate_zero_extents_at(extents, folded, y) == 0) { report.reason = "folds left without a zero extent there"; return; }
+      const std::size_t zero_at_folds = separate_zero_extents_at(extents, folded, y);
+      if(zero_at_folds + add_zero_length_paths(extents, y) == 0) { report.reason = "folds left without a zero extent there"; return; }
     }
   }
 
@@ -160,10 +168,26 @@ private:
       if(!e->separate) f.constant += 1; // extent >= 0
       c.push_back(f);
     }
+    c.insert(c.end(), m_paths.begin(), m_paths.end());
     std::sort(c.begin(), c.end());
     c.erase(std::unique(c.begin(), c.end()), c.end());
     report.constraints = c.size();
     return c;
+  }
+
+  // The chains of zero extents in `y` between critical sides, each as sum >= 1; returns the new ones.
+  std::size_t add_zero_length_paths(const std::vector<Block_extent*>& extents, const Eigen::VectorXd& y)
+  {
+    std::vector<double> values(m_extents.extents.size(), std::numeric_limits<double>::quiet_NaN());
+    for(const Block_extent* e : extents) values[std::size_t(e - m_extents.extents.data())] = e->form(y);
+    std::size_t added = 0;
+    for(const std::vector<std::uint32_t>& path : zero_length_paths(m_extents, values)) {
+      Linear_form sum;
+      for(std::uint32_t i : path) sum = sum.plus(m_extents.extents[i].form, 1.0);
+      if(!sum.terms.empty()) added += m_paths.insert(sum).second;
+    }
+    report.paths = m_paths.size();
+    return added;
   }
 
   std::size_t separate_zero_extents_at(const std::vector<Block_extent*>& extents, const std::vector<char>& folded,
@@ -181,6 +205,7 @@ private:
 
   Trace m_trace;
   Block_extents m_extents;
+  std::set<Linear_form> m_paths;
   Eigen::VectorXd m_seamless;
   Folded m_folded;
 };
