@@ -13,6 +13,7 @@
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_orientation.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_to_lcc.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_validation.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/close_boundary_cracks.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -33,6 +34,7 @@
 
 namespace HR = CGAL::Hexahedral_remeshing;
 namespace T = CGAL::Hexahedral_remeshing::test;
+namespace HRI = CGAL::Hexahedral_remeshing::internal;
 
 namespace {
 
@@ -798,4 +800,45 @@ TEST(HexahedralMeshToLCC, BoundaryFacetsCarryTheirPatch)
   std::multiset<std::size_t> sizes;
   for(const auto& kv : facets_per_patch) sizes.insert(kv.second);
   EXPECT_EQ(sizes, (std::multiset<std::size_t>{2, 2, 3, 3, 6, 6}));
+}
+
+// A crack: two cells that share a face, but one of them has its own copy of one corner of it (slightly
+// off, as the extraction leaves it where the map is flat). Their two faces share three corners; the
+// boundary is not a manifold at the shared corners. Closing the crack merges the copy with the corner
+// (halfway, neither is on a feature): the two-cell grid again, valid. A mesh without a crack is left as
+// it is.
+TEST(CloseBoundaryCracks, GluesTwoFacesThatShareThreeCorners)
+{
+  const auto g = T::make_grid(2, 1, 1, 1.0);
+  HR::Hexahedral_mesh_3 cracked = g.mesh;
+  ASSERT_EQ(cracked.hexahedra.size(), 2u);
+  // the corner (1, 1, 1) of both cells
+  std::uint32_t corner = std::uint32_t(-1);
+  for(std::uint32_t v = 0; v < cracked.points.size(); ++v)
+    if(cracked.points[v] == HR::Hexahedral_mesh_3::Point_3(1, 1, 1)) corner = v;
+  ASSERT_NE(corner, std::uint32_t(-1));
+  const std::uint32_t copy = std::uint32_t(cracked.points.size());
+  cracked.points.push_back(HR::Hexahedral_mesh_3::Point_3(1, 1, 1.05));
+  if(!cracked.vertex_tags.empty()) cracked.vertex_tags.push_back(cracked.vertex_tags[corner]);
+  if(!cracked.vertex_locations.empty()) cracked.vertex_locations.push_back(cracked.vertex_locations[corner]);
+  const std::size_t second = std::count(cracked.hexahedra[0].begin(), cracked.hexahedra[0].end(), corner) ? 1 : 0;
+  std::replace(cracked.hexahedra[second].begin(), cracked.hexahedra[second].end(), corner, copy);
+  const HR::Hexahedral_mesh_check before = HR::check_hexahedral_mesh(cracked);
+  EXPECT_FALSE(before.manifold_boundary);
+  EXPECT_FALSE(before.valid);
+
+  EXPECT_EQ(HRI::close_boundary_cracks(cracked), 1u);
+  const HR::Hexahedral_mesh_check after = HR::check_hexahedral_mesh(cracked);
+  EXPECT_TRUE(after.valid);
+  EXPECT_TRUE(after.manifold_boundary);
+  EXPECT_EQ(cracked.points.size(), g.mesh.points.size());
+  EXPECT_EQ(after.interior_quads, 1u);
+  std::size_t halfway = 0;
+  for(const auto& p : cracked.points) halfway += p == HR::Hexahedral_mesh_3::Point_3(1, 1, 1.025);
+  EXPECT_EQ(halfway, 1u);
+
+  HR::Hexahedral_mesh_3 intact = g.mesh;
+  EXPECT_EQ(HRI::close_boundary_cracks(intact), 0u);
+  EXPECT_EQ(intact.points, g.mesh.points);
+  EXPECT_EQ(intact.hexahedra, g.mesh.hexahedra);
 }

@@ -142,6 +142,7 @@ inline int command_remesh(const Arguments& args)
         .value("inverted_tetrahedra", r.extraction.inverted_tetrahedra)
         .value("incomplete_cells", r.extraction.incomplete_cells)
         .value("resolved_cells", r.extraction.resolved_cells)
+        .value("closed_boundary_cracks", r.extraction.closed_boundary_cracks)
         .end();
     json.begin("smoothing")
         .value("performed", r.smoothed)

@@ -269,6 +269,9 @@ struct Hexahedral_extraction_result
   /// more than once), completed with the vertex their complete neighbours use (not in
   /// `incomplete_cells`).
   std::size_t resolved_cells = 0;
+  /// Boundary faces of two cells that share three corners (a crack where the map is flat) glued into one
+  /// face by merging their fourth corners; done by `hexahedral_remeshing()` before its smoothing, 0 here.
+  std::size_t closed_boundary_cracks = 0;
   /// Cells next to inverted tetrahedra with a corner inverted in space (folds): left out, or kept
   /// with the named parameter `keep_folded_cells`.
   std::size_t folded_cells = 0;

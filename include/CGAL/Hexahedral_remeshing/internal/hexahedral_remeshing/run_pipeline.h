@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_remeshing_result.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/close_boundary_cracks.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/feature_fidelity.h>
 #include <CGAL/Hexahedral_remeshing/internal/wall_thickness.h>
 
@@ -307,9 +308,12 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
     r.seconds = seconds();
     return r;
   }
-  // smoothing cannot fill the cells the extraction left out: an incomplete mesh is reported as it is
-  if(r.extraction.incomplete_cells + r.extraction.untraced_corners == 0 && smoothing)
+  // smoothing cannot fill the cells the extraction left out: an incomplete mesh is reported as it is;
+  // the smoothing places the vertices that close the cracks
+  if(r.extraction.incomplete_cells + r.extraction.untraced_corners == 0 && smoothing) {
+    r.extraction.closed_boundary_cracks = close_boundary_cracks(hexes);
     smooth_extracted_hexahedra(mesh, hexes, np, visitor, r);
+  }
   check_extracted_hexahedra(mesh, hexes, np, visitor, r);
   decide_remeshing_status(mesh, r);
   r.seconds = seconds();

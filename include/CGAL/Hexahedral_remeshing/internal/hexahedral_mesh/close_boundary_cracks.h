@@ -1,0 +1,131 @@
+// Copyright (c) 2026 The Hexahedral_remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s) : Hexahedral_remeshing developers
+//
+// Two boundary quadrilaterals of the extracted hexahedra that share three corners are one face with a
+// crack: where the map is flat, the extraction puts the fourth corners of the two cells on either side
+// apart (HexMe n02c, where two feature curves of a face meet tangentially: two hexahedra folded onto
+// each other around a corner, the boundary touching itself along the face's diagonal, 2 non-manifold
+// boundary vertices and nothing else wrong). Merging the two fourth corners glues the quadrilaterals
+// into one interior face; the untangling and smoothing that follow place the merged vertex.
+#ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_MESH_CLOSE_BOUNDARY_CRACKS_H
+#define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_MESH_CLOSE_BOUNDARY_CRACKS_H
+
+#include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Hexahedral_remeshing {
+namespace internal {
+
+// The faces used by one hexahedron only, as (hexahedron, face of hex_faces()).
+inline std::vector<std::pair<std::uint32_t, int> > boundary_hex_faces(const Hexahedral_mesh_3& hexes)
+{
+  std::map<std::array<std::uint32_t, 4>, std::vector<std::pair<std::uint32_t, int> > > faces;
+  for(std::uint32_t h = 0; h < hexes.hexahedra.size(); ++h)
+    for(int f = 0; f < 6; ++f) {
+      std::array<std::uint32_t, 4> key;
+      for(int i = 0; i < 4; ++i) key[std::size_t(i)] = hexes.hexahedra[h][std::size_t(hex_faces()[std::size_t(f)][std::size_t(i)])];
+      std::sort(key.begin(), key.end());
+      faces[key].emplace_back(h, f);
+    }
+  std::vector<std::pair<std::uint32_t, int> > out;
+  for(const auto& f : faces)
+    if(f.second.size() == 1) out.push_back(f.second.front());
+  return out;
+}
+
+// Pairs (a, b) of vertices to merge: the fourth corners of two boundary faces that share three, of two
+// different hexahedra neither of which holds both (the merge must not collapse an edge of a cell).
+inline std::vector<std::pair<std::uint32_t, std::uint32_t> > crack_corners(const Hexahedral_mesh_3& hexes)
+{
+  const std::vector<std::pair<std::uint32_t, int> > boundary = boundary_hex_faces(hexes);
+  std::map<std::array<std::uint32_t, 3>, std::vector<std::size_t> > by_triple;
+  auto corners = [&](std::size_t q) {
+    std::array<std::uint32_t, 4> c;
+    for(int i = 0; i < 4; ++i)
+      c[std::size_t(i)] = hexes.hexahedra[boundary[q].first][std::size_t(hex_faces()[std::size_t(boundary[q].second)][std::size_t(i)])];
+    return c;
+  };
+  for(std::size_t q = 0; q < boundary.size(); ++q) {
+    const std::array<std::uint32_t, 4> c = corners(q);
+    for(int skip = 0; skip < 4; ++skip) {
+      std::array<std::uint32_t, 3> t;
+      for(int i = 0, j = 0; i < 4; ++i)
+        if(i != skip) t[std::size_t(j++)] = c[std::size_t(i)];
+      std::sort(t.begin(), t.end());
+      by_triple[t].push_back(q);
+    }
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs;
+  for(const auto& entry : by_triple) {
+    if(entry.second.size() != 2) continue;
+    const std::array<std::uint32_t, 4> c0 = corners(entry.second[0]), c1 = corners(entry.second[1]);
+    std::uint32_t a = c0[0], b = c1[0];
+    for(std::uint32_t v : c0)
+      if(!std::binary_search(entry.first.begin(), entry.first.end(), v)) a = v;
+    for(std::uint32_t v : c1)
+      if(!std::binary_search(entry.first.begin(), entry.first.end(), v)) b = v;
+    const auto& h0 = hexes.hexahedra[boundary[entry.second[0]].first];
+    const auto& h1 = hexes.hexahedra[boundary[entry.second[1]].first];
+    const bool shared = std::count(h0.begin(), h0.end(), b) > 0 || std::count(h1.begin(), h1.end(), a) > 0;
+    if(a != b && !shared && boundary[entry.second[0]].first != boundary[entry.second[1]].first) pairs.emplace_back(a, b);
+  }
+  return pairs;
+}
+
+// Merges the fourth corners of every cracked face (crack_corners()): the vertex on a feature curve or
+// a corner of the input is kept where it is, else the two meet halfway; merged vertices are removed
+// (every per-vertex array compacted). Returns the number of cracks closed.
+inline std::size_t close_boundary_cracks(Hexahedral_mesh_3& hexes)
+{
+  const std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs = crack_corners(hexes);
+  if(pairs.empty()) return 0;
+  std::vector<std::uint32_t> target(hexes.points.size());
+  for(std::uint32_t v = 0; v < target.size(); ++v) target[v] = v;
+  auto find = [&](std::uint32_t v) {
+    while(target[v] != v) v = target[v];
+    return v;
+  };
+  auto rank = [&](std::uint32_t v) { return v < hexes.vertex_tags.size() ? int(hexes.vertex_tags[v]) : 0; };
+  std::size_t closed = 0;
+  for(const auto& p : pairs) {
+    std::uint32_t a = find(p.first), b = find(p.second);
+    if(a == b) continue;
+    if(rank(b) > rank(a)) std::swap(a, b); // a stays
+    if(rank(a) == rank(b)) hexes.points[a] = CGAL::midpoint(hexes.points[a], hexes.points[b]);
+    target[b] = a;
+    ++closed;
+  }
+  for(auto& h : hexes.hexahedra)
+    for(auto& v : h) v = find(v);
+  // compact: drop the merged vertices
+  std::vector<std::uint32_t> index(hexes.points.size(), 0);
+  std::uint32_t n = 0;
+  for(std::uint32_t v = 0; v < index.size(); ++v) {
+    index[v] = n;
+    if(target[v] != v) continue;
+    hexes.points[n] = hexes.points[v];
+    if(v < hexes.vertex_locations.size()) hexes.vertex_locations[n] = hexes.vertex_locations[v];
+    if(v < hexes.vertex_tags.size()) hexes.vertex_tags[n] = hexes.vertex_tags[v];
+    ++n;
+  }
+  hexes.points.resize(n);
+  if(!hexes.vertex_locations.empty()) hexes.vertex_locations.resize(n);
+  if(!hexes.vertex_tags.empty()) hexes.vertex_tags.resize(n);
+  for(auto& h : hexes.hexahedra)
+    for(auto& v : h) v = index[v];
+  return closed;
+}
+
+} // namespace internal
+} // namespace Hexahedral_remeshing
+} // namespace CGAL
+
+#endif // CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_MESH_CLOSE_BOUNDARY_CRACKS_H
