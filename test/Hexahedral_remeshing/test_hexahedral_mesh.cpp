@@ -837,6 +837,23 @@ TEST(CloseBoundaryCracks, GluesTwoFacesThatShareThreeCorners)
   for(const auto& p : cracked.points) halfway += p == HR::Hexahedral_mesh_3::Point_3(1, 1, 1.025);
   EXPECT_EQ(halfway, 1u);
 
+  // a cell holding both fourth corners would collapse: the crack is left open
+  HR::Hexahedral_mesh_3 held = g.mesh;
+  held.points.push_back(HR::Hexahedral_mesh_3::Point_3(1, 1, 1.05));
+  std::replace(held.hexahedra[second].begin(), held.hexahedra[second].end(), corner, copy);
+  std::array<std::uint32_t, 8> third{{corner, copy, 0, 0, 0, 0, 0, 0}};
+  for(int i = 2; i < 8; ++i) {
+    third[std::size_t(i)] = std::uint32_t(held.points.size());
+    held.points.push_back(HR::Hexahedral_mesh_3::Point_3(5 + i, 5, 5));
+  }
+  held.hexahedra.push_back(third);
+  held.vertex_tags.clear();
+  held.vertex_locations.clear();
+  const HR::Hexahedral_mesh_3 held_before = held;
+  EXPECT_EQ(HRI::crack_corners(held).size(), 1u);
+  EXPECT_EQ(HRI::close_boundary_cracks(held), 0u);
+  EXPECT_EQ(held.hexahedra, held_before.hexahedra);
+
   HR::Hexahedral_mesh_3 intact = g.mesh;
   EXPECT_EQ(HRI::close_boundary_cracks(intact), 0u);
   EXPECT_EQ(intact.points, g.mesh.points);

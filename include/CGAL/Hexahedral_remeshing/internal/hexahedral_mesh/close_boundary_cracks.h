@@ -41,8 +41,8 @@ inline std::vector<std::pair<std::uint32_t, int> > boundary_hex_faces(const Hexa
   return out;
 }
 
-// Pairs (a, b) of vertices to merge: the fourth corners of two boundary faces that share three, of two
-// different hexahedra neither of which holds both (the merge must not collapse an edge of a cell).
+// Pairs (a, b) of vertices to merge: the fourth corners of two boundary faces of two different
+// hexahedra that share three corners.
 inline std::vector<std::pair<std::uint32_t, std::uint32_t> > crack_corners(const Hexahedral_mesh_3& hexes)
 {
   const std::vector<std::pair<std::uint32_t, int> > boundary = boundary_hex_faces(hexes);
@@ -72,10 +72,7 @@ inline std::vector<std::pair<std::uint32_t, std::uint32_t> > crack_corners(const
       if(!std::binary_search(entry.first.begin(), entry.first.end(), v)) a = v;
     for(std::uint32_t v : c1)
       if(!std::binary_search(entry.first.begin(), entry.first.end(), v)) b = v;
-    const auto& h0 = hexes.hexahedra[boundary[entry.second[0]].first];
-    const auto& h1 = hexes.hexahedra[boundary[entry.second[1]].first];
-    const bool shared = std::count(h0.begin(), h0.end(), b) > 0 || std::count(h1.begin(), h1.end(), a) > 0;
-    if(a != b && !shared && boundary[entry.second[0]].first != boundary[entry.second[1]].first) pairs.emplace_back(a, b);
+    if(a != b && boundary[entry.second[0]].first != boundary[entry.second[1]].first) pairs.emplace_back(a, b);
   }
   return pairs;
 }
@@ -94,17 +91,21 @@ inline std::size_t close_boundary_cracks(Hexahedral_mesh_3& hexes)
     return v;
   };
   auto rank = [&](std::uint32_t v) { return v < hexes.vertex_tags.size() ? int(hexes.vertex_tags[v]) : 0; };
+  auto in_one_cell = [&](std::uint32_t a, std::uint32_t b) {
+    for(const auto& h : hexes.hexahedra)
+      if(std::count(h.begin(), h.end(), a) > 0 && std::count(h.begin(), h.end(), b) > 0) return true;
+    return false;
+  };
   std::size_t closed = 0;
   for(const auto& p : pairs) {
     std::uint32_t a = find(p.first), b = find(p.second);
-    if(a == b) continue;
+    if(a == b || in_one_cell(a, b)) continue; // the merge would collapse a cell
     if(rank(b) > rank(a)) std::swap(a, b); // a stays
     if(rank(a) == rank(b)) hexes.points[a] = CGAL::midpoint(hexes.points[a], hexes.points[b]);
     target[b] = a;
+    for(auto& h : hexes.hexahedra) std::replace(h.begin(), h.end(), b, a);
     ++closed;
   }
-  for(auto& h : hexes.hexahedra)
-    for(auto& v : h) v = find(v);
   // compact: drop the merged vertices
   std::vector<std::uint32_t> index(hexes.points.size(), 0);
   std::uint32_t n = 0;
