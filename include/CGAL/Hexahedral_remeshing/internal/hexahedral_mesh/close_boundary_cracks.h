@@ -12,7 +12,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_HEXAHEDRAL_MESH_CLOSE_BOUNDARY_CRACKS_H
 
 #include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
-#include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/hexahedron_topology.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/boundary_groups.h>
 
 #include <algorithm>
 #include <array>
@@ -24,33 +24,15 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// The faces used by one hexahedron only, as (hexahedron, face of hex_faces()).
-inline std::vector<std::pair<std::uint32_t, int> > boundary_hex_faces(const Hexahedral_mesh_3& hexes)
-{
-  std::map<std::array<std::uint32_t, 4>, std::vector<std::pair<std::uint32_t, int> > > faces;
-  for(std::uint32_t h = 0; h < hexes.hexahedra.size(); ++h)
-    for(int f = 0; f < 6; ++f) {
-      std::array<std::uint32_t, 4> key;
-      for(int i = 0; i < 4; ++i) key[std::size_t(i)] = hexes.hexahedra[h][std::size_t(hex_faces()[std::size_t(f)][std::size_t(i)])];
-      std::sort(key.begin(), key.end());
-      faces[key].emplace_back(h, f);
-    }
-  std::vector<std::pair<std::uint32_t, int> > out;
-  for(const auto& f : faces)
-    if(f.second.size() == 1) out.push_back(f.second.front());
-  return out;
-}
-
 // Pairs (a, b) of vertices to merge: the fourth corners of two boundary faces of two different
 // hexahedra that share three corners.
 inline std::vector<std::pair<std::uint32_t, std::uint32_t> > crack_corners(const Hexahedral_mesh_3& hexes)
 {
-  const std::vector<std::pair<std::uint32_t, int> > boundary = boundary_hex_faces(hexes);
+  const std::vector<Hexahedral_boundary_quadrilateral> boundary = boundary_quadrilaterals_of(hexes);
   std::map<std::array<std::uint32_t, 3>, std::vector<std::size_t> > by_triple;
   auto corners = [&](std::size_t q) {
     std::array<std::uint32_t, 4> c;
-    for(int i = 0; i < 4; ++i)
-      c[std::size_t(i)] = hexes.hexahedra[boundary[q].first][std::size_t(hex_faces()[std::size_t(boundary[q].second)][std::size_t(i)])];
+    for(std::size_t i = 0; i < 4; ++i) c[i] = std::uint32_t(boundary[q].vertices[i]);
     return c;
   };
   for(std::size_t q = 0; q < boundary.size(); ++q) {
@@ -72,7 +54,7 @@ inline std::vector<std::pair<std::uint32_t, std::uint32_t> > crack_corners(const
       if(!std::binary_search(entry.first.begin(), entry.first.end(), v)) a = v;
     for(std::uint32_t v : c1)
       if(!std::binary_search(entry.first.begin(), entry.first.end(), v)) b = v;
-    if(a != b && boundary[entry.second[0]].first != boundary[entry.second[1]].first) pairs.emplace_back(a, b);
+    if(a != b && boundary[entry.second[0]].hexahedron != boundary[entry.second[1]].hexahedron) pairs.emplace_back(a, b);
   }
   return pairs;
 }

@@ -118,7 +118,9 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   auto trace = [&](motorcycle::Block_extents& extents) {
     return trace_complex(mesh, P, x0, seamless, o.quantization_time_limit, r, extents);
   };
-  const std::size_t seamless_folds = count_non_positive_jacobians(geometry, P * seamless.y + x0, &flat);
+  // the seamless map's own folds (exact), the structurally flat tetrahedra left out
+  const std::size_t seamless_folds = std::size_t(
+    std::count_if(seamless.folds.begin(), seamless.folds.end(), [&](std::uint32_t t) { return flat[t] == 0; }));
   const Quantization_result q = seamless.success ? quantize_map(finder, trace, H, rhs, reduced.integer_column, seamless.y, seamless_folds, o, solver, y, r)
                                                  : Quantization_result{false};
   r.rounded_inverted_tetrahedra = count_non_positive_jacobians(geometry, P * y + x0);
