@@ -854,6 +854,37 @@ TEST(CloseBoundaryCracks, GluesTwoFacesThatShareThreeCorners)
   EXPECT_EQ(HRI::close_boundary_cracks(held), 0u);
   EXPECT_EQ(held.hexahedra, held_before.hexahedra);
 
+  // two copies in one cell of a 2 x 2 grid: the face it shares with its x-neighbour keeps only a
+  // diagonal, a crack only once the face shared with its y-neighbour (three corners) is closed
+  const auto g4 = T::make_grid(2, 2, 1, 1.0);
+  HR::Hexahedral_mesh_3 chained = g4.mesh;
+  auto vertex_at = [&](double x, double y, double z) {
+    for(std::uint32_t v = 0; v < chained.points.size(); ++v)
+      if(chained.points[v] == HR::Hexahedral_mesh_3::Point_3(x, y, z)) return v;
+    return std::uint32_t(-1);
+  };
+  const std::uint32_t p = vertex_at(1, 1, 0), q = vertex_at(1, 0, 1), far_corner = vertex_at(2, 0, 0);
+  ASSERT_NE(p, std::uint32_t(-1));
+  ASSERT_NE(q, std::uint32_t(-1));
+  std::size_t cell = chained.hexahedra.size();
+  for(std::size_t h = 0; h < chained.hexahedra.size(); ++h)
+    if(std::count(chained.hexahedra[h].begin(), chained.hexahedra[h].end(), far_corner)) cell = h;
+  ASSERT_LT(cell, chained.hexahedra.size());
+  for(const std::uint32_t v : {p, q}) {
+    const std::uint32_t c = std::uint32_t(chained.points.size());
+    chained.points.push_back(HR::Hexahedral_mesh_3::Point_3(chained.points[v].x() + 0.04, chained.points[v].y(), chained.points[v].z()));
+    if(!chained.vertex_tags.empty()) chained.vertex_tags.push_back(chained.vertex_tags[v]);
+    if(!chained.vertex_locations.empty()) chained.vertex_locations.push_back(chained.vertex_locations[v]);
+    std::replace(chained.hexahedra[cell].begin(), chained.hexahedra[cell].end(), v, c);
+  }
+  EXPECT_FALSE(HR::check_hexahedral_mesh(chained).valid);
+  EXPECT_EQ(HRI::crack_corners(chained).size(), 1u); // the diagonal-only face is no crack yet
+  EXPECT_EQ(HRI::close_boundary_cracks(chained), 2u);
+  const HR::Hexahedral_mesh_check chained_after = HR::check_hexahedral_mesh(chained);
+  EXPECT_TRUE(chained_after.valid);
+  EXPECT_EQ(chained.points.size(), g4.mesh.points.size());
+  EXPECT_EQ(chained_after.interior_quads, 4u);
+
   HR::Hexahedral_mesh_3 intact = g.mesh;
   EXPECT_EQ(HRI::close_boundary_cracks(intact), 0u);
   EXPECT_EQ(intact.points, g.mesh.points);

@@ -61,10 +61,13 @@ inline std::vector<std::pair<std::uint32_t, std::uint32_t> > crack_corners(const
 
 // Merges the fourth corners of every cracked face (crack_corners()): the vertex on a feature curve or
 // a corner of the input is kept where it is, else the two meet halfway; merged vertices are removed
-// (every per-vertex array compacted). Returns the number of cracks closed.
+// (every per-vertex array compacted). Rounds until one closes nothing: a face whose two sides share only
+// a diagonal shares three corners once a neighbouring crack has merged a third (MAMBO B41 refined 1-to-8:
+// 9 cracks closed in the first round left 5 such faces, 10 non-manifold boundary vertices). Returns the
+// number of cracks closed.
 inline std::size_t close_boundary_cracks(Hexahedral_mesh_3& hexes)
 {
-  const std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs = crack_corners(hexes);
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs = crack_corners(hexes);
   if(pairs.empty()) return 0;
   std::vector<std::uint32_t> target(hexes.points.size());
   for(std::uint32_t v = 0; v < target.size(); ++v) target[v] = v;
@@ -79,14 +82,18 @@ inline std::size_t close_boundary_cracks(Hexahedral_mesh_3& hexes)
     return false;
   };
   std::size_t closed = 0;
-  for(const auto& p : pairs) {
-    std::uint32_t a = find(p.first), b = find(p.second);
-    if(a == b || in_one_cell(a, b)) continue; // the merge would collapse a cell
-    if(rank(b) > rank(a)) std::swap(a, b); // a stays
-    if(rank(a) == rank(b)) hexes.points[a] = CGAL::midpoint(hexes.points[a], hexes.points[b]);
-    target[b] = a;
-    for(auto& h : hexes.hexahedra) std::replace(h.begin(), h.end(), b, a);
-    ++closed;
+  for(std::size_t round_closed = 1; round_closed > 0 && !pairs.empty(); pairs = crack_corners(hexes)) {
+    round_closed = 0;
+    for(const auto& p : pairs) {
+      std::uint32_t a = find(p.first), b = find(p.second);
+      if(a == b || in_one_cell(a, b)) continue; // the merge would collapse a cell
+      if(rank(b) > rank(a)) std::swap(a, b); // a stays
+      if(rank(a) == rank(b)) hexes.points[a] = CGAL::midpoint(hexes.points[a], hexes.points[b]);
+      target[b] = a;
+      for(auto& h : hexes.hexahedra) std::replace(h.begin(), h.end(), b, a);
+      ++round_closed;
+    }
+    closed += round_closed;
   }
   // compact: drop the merged vertices
   std::vector<std::uint32_t> index(hexes.points.size(), 0);
