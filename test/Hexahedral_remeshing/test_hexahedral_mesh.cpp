@@ -8,6 +8,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/IO/read_VTK.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>
+#include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_boundary_groups.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_mesh_orientation.h>
@@ -505,6 +506,62 @@ TEST(HexahedralBoundaryGroups, BoxFromItsOwnSharpEdges)
     }
     EXPECT_EQ(on_sides, 2);
   }
+}
+
+// Boundary groups from a tet mesh of the same 3 x 2 x 1 box whose boundary triangles carry no tag (a
+// single unnamed patch, as in the MAMBO VTK files): the six sides between the sharp edges, as from the
+// hex mesh's own boundary; with the patch named, that one named group.
+TEST(HexahedralBoundaryGroups, UntaggedTrianglesGiveTheSidesBetweenSharpEdges)
+{
+  // the box in 6 tetrahedra around the diagonal (0,0,0)-(3,2,1), its 12 boundary triangles untagged
+  std::ostringstream vtk;
+  vtk << "# vtk DataFile Version 2.0\nbox\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n";
+  for(int i = 0; i < 8; ++i) vtk << 3 * (i & 1) << ' ' << 2 * ((i >> 1) & 1) << ' ' << ((i >> 2) & 1) << '\n';
+  const int tets[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
+  const int sides[12][3] = {{0, 1, 3}, {0, 2, 3}, {4, 5, 7}, {4, 6, 7}, {0, 1, 5}, {0, 4, 5},
+                            {2, 3, 7}, {2, 6, 7}, {0, 2, 6}, {0, 4, 6}, {1, 3, 7}, {1, 5, 7}};
+  vtk << "CELLS 18 " << 6 * 5 + 12 * 4 << '\n';
+  for(const auto& t : tets) vtk << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  for(const auto& t : sides) vtk << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  vtk << "CELL_TYPES 18\n";
+  for(int i = 0; i < 18; ++i) vtk << (i < 6 ? 10 : 5) << '\n';
+  HR::Tetrahedral_soup_3<HR::Tetrahedral_mesh_3<>::Point_3> soup;
+  HR::IO::read_VTK(vtk.str(), "box.vtk", soup);
+  HR::Tetrahedral_mesh_3<> tets_mesh;
+  HR::build_tetrahedral_mesh(soup, tets_mesh);
+  ASSERT_EQ(tets_mesh.number_of_surface_patches(), 1u);
+
+  auto m = T::make_grid(3, 2, 1).mesh;
+  HR::Hexahedral_boundary_groups_report r = HR::compute_hexahedral_boundary_groups(m, tets_mesh);
+  EXPECT_EQ(r.patches, 6u);
+  EXPECT_EQ(r.curves, 12u);
+  EXPECT_EQ(r.feature_edges, 4u * (3 + 2 + 1));
+  for(const auto& q : m.boundary_quadrilaterals) {  // each patch on one side of the box
+    int on_plane = 0;
+    for(int d = 0; d < 3; ++d) {
+      bool same = true;
+      for(auto v : q.vertices) same = same && m.points[v][d] == m.points[q.vertices[0]][d];
+      on_plane += same;
+    }
+    EXPECT_EQ(on_plane, 1);
+  }
+  std::map<int, std::set<std::array<double, 3> > > normals;
+  for(const auto& q : m.boundary_quadrilaterals) {
+    const auto n = CGAL::cross_product(m.points[q.vertices[1]] - m.points[q.vertices[0]], m.points[q.vertices[2]] - m.points[q.vertices[0]]);
+    normals[q.patch].insert({ {n.x() > 0 ? 1. : n.x() < 0 ? -1. : 0., n.y() > 0 ? 1. : n.y() < 0 ? -1. : 0., n.z() > 0 ? 1. : n.z() < 0 ? -1. : 0.} });
+  }
+  EXPECT_EQ(normals.size(), 6u);
+  for(const auto& kv : normals) EXPECT_EQ(kv.second.size(), 1u) << "patch " << kv.first << " spans several sides";
+
+  soup.patch_names = {{0, "wall"}};
+  HR::Tetrahedral_mesh_3<> named;
+  HR::build_tetrahedral_mesh(soup, named);
+  auto n = T::make_grid(3, 2, 1).mesh;
+  r = HR::compute_hexahedral_boundary_groups(n, named);
+  EXPECT_EQ(r.patches, 1u);
+  EXPECT_EQ(r.feature_edges, 0u);
+  ASSERT_EQ(n.patch_names.size(), 1u);
+  EXPECT_EQ(n.patch_names[0].second, "wall");
 }
 
 // Every writer carries the groups: MEDIT's Quadrilaterals read back by the package's reader, the

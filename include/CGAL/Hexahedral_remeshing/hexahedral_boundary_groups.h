@@ -60,9 +60,10 @@ inline Patch_surface patch_surface(const Hexahedral_smoothing_reference& referen
 /// Fills `hexes.boundary_quadrilaterals` and `hexes.feature_edges` from the tetrahedral mesh the hex
 /// mesh was made from: every boundary quadrilateral gets the surface patch of the input it lies on
 /// (the CAD face for STEP, BREP, IGES and `.msh` input, the patch of a C3t3 or of a tagged MEDIT or
-/// VTK input), and, when the input has no patches, the region between sharp edges it lies in (edges
-/// whose dihedral angle differs from flat by more than `sharp_angle` degrees, and the input's
-/// feature curves), numbered from 0. A quad takes the patch most of five of its points (its centre,
+/// VTK input), and, when the input has no patches or a single unnamed one (boundary triangles without
+/// tags, as in the MAMBO VTK files: one group for the whole boundary is no group a solver can load), the
+/// region between sharp edges it lies in (edges whose dihedral angle differs from flat by more than
+/// `sharp_angle` degrees, and the input's feature curves), numbered from 0. A quad takes the patch most of five of its points (its centre,
 /// and halfway from the centre to each corner) are closest to. Every hex edge between quads of two
 /// patches is a feature edge, with the input's feature curve nearest to its midpoint (within a
 /// quarter of its length), else a number per pair of patches. The names of the input's patches
@@ -80,7 +81,8 @@ Hexahedral_boundary_groups_report compute_hexahedral_boundary_groups(Hexahedral_
   typedef std::uint32_t Id;
   Hexahedral_smoothing_reference reference = make_hexahedral_smoothing_reference(mesh);
   std::vector<int> triangle_patch(mesh.number_of_boundary_triangles(), -1);
-  if(mesh.number_of_surface_patches() > 0)
+  const bool input_patches = mesh.number_of_surface_patches() > 1 || !mesh.surface_patch_names().empty();
+  if(input_patches)
     for(std::size_t b = 0; b < triangle_patch.size(); ++b) triangle_patch[b] = mesh.boundary_triangle_patch(Id(b));
   else
     triangle_patch = internal::reference_patches(reference, sharp_angle * CGAL_PI / 180., false);
@@ -93,7 +95,7 @@ Hexahedral_boundary_groups_report compute_hexahedral_boundary_groups(Hexahedral_
   }
   internal::assign_boundary_groups(hexes, surface);
   hexes.patch_names.clear();
-  if(mesh.number_of_surface_patches() > 0) hexes.patch_names = mesh.surface_patch_names();
+  if(input_patches) hexes.patch_names = mesh.surface_patch_names();
   return internal::boundary_groups_report(hexes);
 }
 
