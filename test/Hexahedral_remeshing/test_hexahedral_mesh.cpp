@@ -929,14 +929,20 @@ TEST(CloseBoundaryCracks, GluesTwoFacesThatShareThreeCorners)
   ASSERT_LT(cell, chained.hexahedra.size());
   for(const std::uint32_t v : {p, q}) {
     const std::uint32_t c = std::uint32_t(chained.points.size());
-    chained.points.push_back(HR::Hexahedral_mesh_3::Point_3(chained.points[v].x() + 0.04, chained.points[v].y(), chained.points[v].z()));
+    chained.points.push_back(HR::Hexahedral_mesh_3::Point_3(chained.points[v].x() + 0.2, chained.points[v].y(), chained.points[v].z()));
     if(!chained.vertex_tags.empty()) chained.vertex_tags.push_back(chained.vertex_tags[v]);
     if(!chained.vertex_locations.empty()) chained.vertex_locations.push_back(chained.vertex_locations[v]);
     std::replace(chained.hexahedra[cell].begin(), chained.hexahedra[cell].end(), v, c);
   }
   EXPECT_FALSE(HR::check_hexahedral_mesh(chained).valid);
   EXPECT_EQ(HRI::crack_corners(chained).size(), 1u); // the diagonal-only face is no crack yet
-  EXPECT_EQ(HRI::close_boundary_cracks(chained), 2u);
+  // the merged corner would not be inside the input (two walls of a slot, corners 0.2 apart): left apart
+  HR::Hexahedral_mesh_3 slot = chained;
+  EXPECT_EQ(HRI::close_boundary_cracks(slot, [](const HR::Hexahedral_mesh_3::Point_3&) { return 0.; }), 0u);
+  EXPECT_EQ(slot.hexahedra, chained.hexahedra);
+  EXPECT_EQ(slot.points, chained.points);
+  // inside the input (a tenth of an edge deep): closed
+  EXPECT_EQ(HRI::close_boundary_cracks(chained, [](const HR::Hexahedral_mesh_3::Point_3&) { return 0.1; }), 2u);
   const HR::Hexahedral_mesh_check chained_after = HR::check_hexahedral_mesh(chained);
   EXPECT_TRUE(chained_after.valid);
   EXPECT_EQ(chained.points.size(), g4.mesh.points.size());

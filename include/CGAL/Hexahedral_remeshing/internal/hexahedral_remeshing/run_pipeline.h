@@ -7,6 +7,8 @@
 #include <CGAL/Hexahedral_remeshing/Hexahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_remeshing_result.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_mesh_smoothing.h>
+#include <CGAL/Hexahedral_remeshing/internal/hex_smoothing/reference_projector.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_mesh/close_boundary_cracks.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/feature_fidelity.h>
 #include <CGAL/Hexahedral_remeshing/internal/wall_thickness.h>
@@ -15,6 +17,8 @@
 
 #include <chrono>
 #include <functional>
+#include <array>
+#include <memory>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -22,6 +26,46 @@
 namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
+
+// How far a point is inside `mesh`: its distance to the boundary (an AABB tree of the boundary
+// triangles) if a tetrahedron holds it (exact orientations against those whose box holds it), else
+// minus that distance. What close_boundary_cracks() asks of a merged corner.
+template <class Traits>
+std::function<double(const Hexahedral_mesh_3::Point_3&)> depth_in_tetrahedral_mesh(const Tetrahedral_mesh_3<Traits>& mesh)
+{
+  typedef Hexahedral_mesh_3::Point_3 Point;
+  auto projector = std::make_shared<Reference_projector>(make_hexahedral_smoothing_reference(mesh));
+  auto tetrahedra = std::make_shared<std::vector<std::array<Point, 4> > >();
+  tetrahedra->reserve(mesh.number_of_tetrahedra());
+  for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+    std::array<Point, 4> c;
+    for(std::size_t i = 0; i < 4; ++i) {
+      const auto& p = mesh.point(mesh.tetrahedron_vertices(t)[i]);
+      c[i] = Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    tetrahedra->push_back(c);
+  }
+  auto inside = [tetrahedra](const Point& q) {
+    for(const auto& c : *tetrahedra) {
+      if(!CGAL::do_overlap(q.bbox(), c[0].bbox() + c[1].bbox() + c[2].bbox() + c[3].bbox())) continue;
+      const CGAL::Orientation o = CGAL::orientation(c[0], c[1], c[2], c[3]);
+      if(o == CGAL::COPLANAR) continue;
+      bool in = true;
+      for(std::size_t i = 0; i < 4 && in; ++i) {
+        std::array<Point, 4> d = c;
+        d[i] = q;
+        const CGAL::Orientation oi = CGAL::orientation(d[0], d[1], d[2], d[3]);
+        in = oi == o || oi == CGAL::COPLANAR;
+      }
+      if(in) return true;
+    }
+    return false;
+  };
+  return [projector, inside](const Point& p) {
+    const double d = projector->has_surface() ? projector->distance_to_surface(p) : 0.;
+    return inside(p) ? d : -d;
+  };
+}
 
 template <class Traits>
 double tetrahedral_mesh_volume(const Tetrahedral_mesh_3<Traits>& mesh)
@@ -311,7 +355,7 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   // smoothing cannot fill the cells the extraction left out: an incomplete mesh is reported as it is;
   // the smoothing places the vertices that close the cracks
   if(r.extraction.incomplete_cells + r.extraction.untraced_corners == 0 && smoothing) {
-    r.extraction.closed_boundary_cracks = close_boundary_cracks(hexes);
+    r.extraction.closed_boundary_cracks = close_boundary_cracks(hexes, depth_in_tetrahedral_mesh(mesh));
     smooth_extracted_hexahedra(mesh, hexes, np, visitor, r);
   }
   check_extracted_hexahedra(mesh, hexes, np, visitor, r);
