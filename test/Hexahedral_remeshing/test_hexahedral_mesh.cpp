@@ -520,16 +520,23 @@ TEST(HexahedralBoundaryGroups, UntaggedTrianglesGiveTheSidesBetweenSharpEdges)
   const int tets[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
   const int sides[12][3] = {{0, 1, 3}, {0, 2, 3}, {4, 5, 7}, {4, 6, 7}, {0, 1, 5}, {0, 4, 5},
                             {2, 3, 7}, {2, 6, 7}, {0, 2, 6}, {0, 4, 6}, {1, 3, 7}, {1, 5, 7}};
-  vtk << "CELLS 18 " << 6 * 5 + 12 * 4 << '\n';
+  // and its 12 edges as untagged lines (one curve id for all, as in the MAMBO files)
+  std::vector<std::array<int, 2> > lines;
+  for(int a = 0; a < 8; ++a)
+    for(int d = 0; d < 3; ++d)
+      if(!(a & (1 << d))) lines.push_back({ {a, a | (1 << d)} });
+  vtk << "CELLS 30 " << 6 * 5 + 12 * 4 + 12 * 3 << '\n';
   for(const auto& t : tets) vtk << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
   for(const auto& t : sides) vtk << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  vtk << "CELL_TYPES 18\n";
-  for(int i = 0; i < 18; ++i) vtk << (i < 6 ? 10 : 5) << '\n';
+  for(const auto& l : lines) vtk << "2 " << l[0] << ' ' << l[1] << '\n';
+  vtk << "CELL_TYPES 30\n";
+  for(int i = 0; i < 30; ++i) vtk << (i < 6 ? 10 : i < 18 ? 5 : 3) << '\n';
   HR::Tetrahedral_soup_3<HR::Tetrahedral_mesh_3<>::Point_3> soup;
   HR::IO::read_VTK(vtk.str(), "box.vtk", soup);
   HR::Tetrahedral_mesh_3<> tets_mesh;
   HR::build_tetrahedral_mesh(soup, tets_mesh);
   ASSERT_EQ(tets_mesh.number_of_surface_patches(), 1u);
+  ASSERT_EQ(tets_mesh.number_of_feature_curves(), 1u);
 
   auto m = T::make_grid(3, 2, 1).mesh;
   HR::Hexahedral_boundary_groups_report r = HR::compute_hexahedral_boundary_groups(m, tets_mesh);

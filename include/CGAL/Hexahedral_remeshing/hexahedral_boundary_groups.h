@@ -66,7 +66,7 @@ inline Patch_surface patch_surface(const Hexahedral_smoothing_reference& referen
 /// `sharp_angle` degrees, and the input's feature curves), numbered from 0. A quad takes the patch most of five of its points (its centre,
 /// and halfway from the centre to each corner) are closest to. Every hex edge between quads of two
 /// patches is a feature edge, with the input's feature curve nearest to its midpoint (within a
-/// quarter of its length), else a number per pair of patches. The names of the input's patches
+/// quarter of its length; an input with a single curve id has none), else a number per pair of patches. The names of the input's patches
 /// (`surface_patch_names()`: gmsh physical groups, named CAD faces) go to `hexes.patch_names`.
 ///
 /// \param hexes the hexahedral mesh, in the model units of `mesh` (positions as they are final)
@@ -87,8 +87,10 @@ Hexahedral_boundary_groups_report compute_hexahedral_boundary_groups(Hexahedral_
   else
     triangle_patch = internal::reference_patches(reference, sharp_angle * CGAL_PI / 180., false);
   internal::Patch_surface surface = internal::patch_surface(reference, triangle_patch);
+  // a single curve id (line cells without tags, as in the MAMBO files) names no curve: the edges are
+  // numbered per pair of patches instead
   for(Id e : mesh.boundary_edges()) {
-    if(mesh.edge_curve(e) < 0) continue;
+    if(mesh.edge_curve(e) < 0 || mesh.number_of_feature_curves() < 2) continue;
     const auto& ev = mesh.edge_vertices(e);
     surface.segments.emplace_back(reference.points[ev[0]], reference.points[ev[1]]);
     surface.segment_curve.push_back(mesh.edge_curve(e));
