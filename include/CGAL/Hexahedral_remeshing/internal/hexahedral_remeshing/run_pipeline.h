@@ -29,24 +29,20 @@ namespace internal {
 
 // How far a point is inside `mesh`: its distance to the boundary (an AABB tree of the boundary
 // triangles) if a tetrahedron holds it (exact orientations against those whose box holds it), else
-// minus that distance. What close_boundary_cracks() asks of a merged corner.
+// minus that distance. What close_boundary_cracks() asks of a merged corner; the tree and the
+// tetrahedra are built at the first query (most runs have no crack).
 template <class Traits>
 std::function<double(const Hexahedral_mesh_3::Point_3&)> depth_in_tetrahedral_mesh(const Tetrahedral_mesh_3<Traits>& mesh)
 {
   typedef Hexahedral_mesh_3::Point_3 Point;
-  auto projector = std::make_shared<Reference_projector>(make_hexahedral_smoothing_reference(mesh));
-  auto tetrahedra = std::make_shared<std::vector<std::array<Point, 4> > >();
-  tetrahedra->reserve(mesh.number_of_tetrahedra());
-  for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
-    std::array<Point, 4> c;
-    for(std::size_t i = 0; i < 4; ++i) {
-      const auto& p = mesh.point(mesh.tetrahedron_vertices(t)[i]);
-      c[i] = Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
-    tetrahedra->push_back(c);
-  }
-  auto inside = [tetrahedra](const Point& q) {
-    for(const auto& c : *tetrahedra) {
+  struct State
+  {
+    std::unique_ptr<Reference_projector> projector;
+    std::vector<std::array<Point, 4> > tetrahedra;
+  };
+  auto state = std::make_shared<State>();
+  auto inside = [state](const Point& q) {
+    for(const auto& c : state->tetrahedra) {
       if(!CGAL::do_overlap(q.bbox(), c[0].bbox() + c[1].bbox() + c[2].bbox() + c[3].bbox())) continue;
       const CGAL::Orientation o = CGAL::orientation(c[0], c[1], c[2], c[3]);
       if(o == CGAL::COPLANAR) continue;
@@ -61,8 +57,20 @@ std::function<double(const Hexahedral_mesh_3::Point_3&)> depth_in_tetrahedral_me
     }
     return false;
   };
-  return [projector, inside](const Point& p) {
-    const double d = projector->has_surface() ? projector->distance_to_surface(p) : 0.;
+  return [&mesh, state, inside](const Point& p) {
+    if(!state->projector) {
+      state->projector.reset(new Reference_projector(make_hexahedral_smoothing_reference(mesh)));
+      state->tetrahedra.reserve(mesh.number_of_tetrahedra());
+      for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+        std::array<Point, 4> c;
+        for(std::size_t i = 0; i < 4; ++i) {
+          const auto& v = mesh.point(mesh.tetrahedron_vertices(t)[i]);
+          c[i] = Point(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+        }
+        state->tetrahedra.push_back(c);
+      }
+    }
+    const double d = state->projector->has_surface() ? state->projector->distance_to_surface(p) : 0.;
     return inside(p) ? d : -d;
   };
 }
