@@ -948,12 +948,19 @@ TEST(CloseBoundaryCracks, GluesTwoFacesThatShareThreeCorners)
   EXPECT_EQ(HRI::close_boundary_cracks(slot, [](const HR::Hexahedral_mesh_3::Point_3&) { return 0.; }), 0u);
   EXPECT_EQ(slot.hexahedra, chained.hexahedra);
   EXPECT_EQ(slot.points, chained.points);
+  HR::Hexahedral_mesh_3 slab = chained;
   // inside the input (a tenth of an edge deep): closed
   EXPECT_EQ(HRI::close_boundary_cracks(chained, [](const HR::Hexahedral_mesh_3::Point_3&) { return 0.1; }), 2u);
   const HR::Hexahedral_mesh_check chained_after = HR::check_hexahedral_mesh(chained);
   EXPECT_TRUE(chained_after.valid);
   EXPECT_EQ(chained.points.size(), g4.mesh.points.size());
   EXPECT_EQ(chained_after.interior_quads, 4u);
+  // the input a slab 0 < z < 1: the fourth corners of both cracks lie on its boundary (z = 0, then z = 1),
+  // the glued faces across it (their centres half an edge deep): a face split in two, closed
+  EXPECT_EQ(HRI::close_boundary_cracks(slab, [](const HR::Hexahedral_mesh_3::Point_3& x) { return std::min(x.z(), 1 - x.z()); }), 2u);
+  const HR::Hexahedral_mesh_check slab_after = HR::check_hexahedral_mesh(slab);
+  EXPECT_TRUE(slab_after.valid);
+  EXPECT_EQ(slab_after.interior_quads, 4u);
 
   HR::Hexahedral_mesh_3 intact = g.mesh;
   EXPECT_EQ(HRI::close_boundary_cracks(intact), 0u);
