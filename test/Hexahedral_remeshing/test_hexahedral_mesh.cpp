@@ -957,7 +957,17 @@ TEST(CloseBoundaryCracks, GluesTwoFacesThatShareThreeCorners)
   EXPECT_EQ(chained_after.interior_quads, 4u);
   // the input a slab 0 < z < 1: the fourth corners of both cracks lie on its boundary (z = 0, then z = 1),
   // the glued faces across it (their centres half an edge deep): a face split in two, closed
-  EXPECT_EQ(HRI::close_boundary_cracks(slab, [](const HR::Hexahedral_mesh_3::Point_3& x) { return std::min(x.z(), 1 - x.z()); }), 2u);
+  auto slab_depth = [](const HR::Hexahedral_mesh_3::Point_3& x) { return std::min(x.z(), 1 - x.z()); };
+  // ... unless the two fourth corners lie on two feature curves that share none: merging them would
+  // collapse the face between the curves (the floor of a thin slot)
+  HR::Hexahedral_mesh_3 thin_face = slab;
+  EXPECT_EQ(HRI::close_boundary_cracks(thin_face, slab_depth,
+                                       [](const HR::Hexahedral_mesh_3::Point_3& x, double) {
+                                         return std::vector<std::size_t>{x.x() < 1.1 ? std::size_t(0) : std::size_t(1)};
+                                       }),
+            0u);
+  EXPECT_EQ(thin_face.hexahedra, slab.hexahedra);
+  EXPECT_EQ(HRI::close_boundary_cracks(slab, slab_depth), 2u);
   const HR::Hexahedral_mesh_check slab_after = HR::check_hexahedral_mesh(slab);
   EXPECT_TRUE(slab_after.valid);
   EXPECT_EQ(slab_after.interior_quads, 4u);

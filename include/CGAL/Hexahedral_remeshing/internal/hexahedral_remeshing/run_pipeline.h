@@ -27,12 +27,19 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// How far a point is inside `mesh`: its distance to the boundary (an AABB tree of the boundary
-// triangles) if a tetrahedron holds it (exact orientations against those whose box holds it), else
-// minus that distance. What close_boundary_cracks() asks of a merged corner; the tree and the
-// tetrahedra are built at the first query (most runs have no crack).
+// What close_boundary_cracks() asks of the input solid `mesh`: how far a point is inside it (its distance
+// to the boundary, an AABB tree of the boundary triangles, if a tetrahedron holds it by exact orientations
+// against those whose box holds it, else minus that distance), and which feature curves of its boundary
+// pass within a distance of a point. The tree, the curves and the tetrahedra are built at the first query
+// (most runs have no crack).
+struct Solid_queries
+{
+  std::function<double(const Hexahedral_mesh_3::Point_3&)> depth;
+  std::function<std::vector<std::size_t>(const Hexahedral_mesh_3::Point_3&, double)> feature_curves_near;
+};
+
 template <class Traits>
-std::function<double(const Hexahedral_mesh_3::Point_3&)> depth_in_tetrahedral_mesh(const Tetrahedral_mesh_3<Traits>& mesh)
+Solid_queries solid_queries_of_tetrahedral_mesh(const Tetrahedral_mesh_3<Traits>& mesh)
 {
   typedef Hexahedral_mesh_3::Point_3 Point;
   struct State
@@ -41,6 +48,19 @@ std::function<double(const Hexahedral_mesh_3::Point_3&)> depth_in_tetrahedral_me
     std::vector<std::array<Point, 4> > tetrahedra;
   };
   auto state = std::make_shared<State>();
+  auto build = [&mesh, state]() {
+    if(state->projector) return;
+    state->projector.reset(new Reference_projector(make_hexahedral_smoothing_reference(mesh)));
+    state->tetrahedra.reserve(mesh.number_of_tetrahedra());
+    for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
+      std::array<Point, 4> c;
+      for(std::size_t i = 0; i < 4; ++i) {
+        const auto& v = mesh.point(mesh.tetrahedron_vertices(t)[i]);
+        c[i] = Point(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+      }
+      state->tetrahedra.push_back(c);
+    }
+  };
   auto inside = [state](const Point& q) {
     for(const auto& c : state->tetrahedra) {
       if(!CGAL::do_overlap(q.bbox(), c[0].bbox() + c[1].bbox() + c[2].bbox() + c[3].bbox())) continue;
@@ -57,22 +77,23 @@ std::function<double(const Hexahedral_mesh_3::Point_3&)> depth_in_tetrahedral_me
     }
     return false;
   };
-  return [&mesh, state, inside](const Point& p) {
-    if(!state->projector) {
-      state->projector.reset(new Reference_projector(make_hexahedral_smoothing_reference(mesh)));
-      state->tetrahedra.reserve(mesh.number_of_tetrahedra());
-      for(std::uint32_t t = 0; t < mesh.number_of_tetrahedra(); ++t) {
-        std::array<Point, 4> c;
-        for(std::size_t i = 0; i < 4; ++i) {
-          const auto& v = mesh.point(mesh.tetrahedron_vertices(t)[i]);
-          c[i] = Point(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
-        }
-        state->tetrahedra.push_back(c);
-      }
-    }
+  Solid_queries queries;
+  queries.depth = [state, build, inside](const Point& p) {
+    build();
     const double d = state->projector->has_surface() ? state->projector->distance_to_surface(p) : 0.;
     return inside(p) ? d : -d;
   };
+  queries.feature_curves_near = [state, build](const Point& p, double distance) {
+    build();
+    std::vector<std::size_t> curves;
+    for(std::size_t c = 0; c < state->projector->number_of_polylines(); ++c) {
+      double d = distance + 1;
+      if(state->projector->has_polyline(c)) state->projector->closest_on_polyline(c, p, nullptr, &d);
+      if(d <= distance) curves.push_back(c);
+    }
+    return curves;
+  };
+  return queries;
 }
 
 template <class Traits>
@@ -363,7 +384,8 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   // smoothing cannot fill the cells the extraction left out: an incomplete mesh is reported as it is;
   // the smoothing places the vertices that close the cracks
   if(r.extraction.incomplete_cells + r.extraction.untraced_corners == 0 && smoothing) {
-    r.extraction.closed_boundary_cracks = close_boundary_cracks(hexes, depth_in_tetrahedral_mesh(mesh));
+    const Solid_queries solid = solid_queries_of_tetrahedral_mesh(mesh);
+    r.extraction.closed_boundary_cracks = close_boundary_cracks(hexes, solid.depth, solid.feature_curves_near);
     smooth_extracted_hexahedra(mesh, hexes, np, visitor, r);
   }
   check_extracted_hexahedra(mesh, hexes, np, visitor, r);
