@@ -31,7 +31,7 @@ namespace internal {
 // to the boundary, an AABB tree of the boundary triangles, if a tetrahedron holds it by exact orientations
 // against those whose box holds it, else minus that distance), and which feature curves of its boundary
 // pass within a distance of a point. The tree, the curves and the tetrahedra are built at the first query
-// (most runs have no crack).
+// (most runs have no crack); the queries refer to `mesh`, which must outlive them.
 struct Solid_queries
 {
   std::function<double(const Hexahedral_mesh_3::Point_3&)> depth;
