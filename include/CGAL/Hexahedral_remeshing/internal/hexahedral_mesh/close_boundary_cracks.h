@@ -111,7 +111,8 @@ inline void drop_merged_vertices(Hexahedral_mesh_3& hexes, const std::vector<std
 // feature curves within d of p: two corners apart on two feature curves (within 5% of the edge) that
 // share none are left apart too, since merging them would pinch the face between the curves: the
 // 0.1-wide floor of the slot of slotted_block.step at hex edge 0.3 (the glued faces lie under the floor,
-// inside the solid), a 1.03-wide chamfer of B41 (1.3 hex edges) that its map folds.
+// inside the solid), the 1.03-wide floors of two grooves of B41 (1.3 hex edges, both edges of valence 3)
+// that its map folds.
 // Returns the number of cracks closed.
 inline std::size_t close_boundary_cracks(
   Hexahedral_mesh_3& hexes, const std::function<double(const Hexahedral_mesh_3::Point_3&)>& depth = {},
