@@ -49,6 +49,7 @@
 #include <CGAL/Hexahedral_remeshing/IO/write_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_hexahedral_mesh.h>
+#include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/field_restart.h>
 #include <CGAL/Hexahedral_remeshing/internal/hexahedral_remeshing/refinement_retry.h>
 #include <CGAL/Hexahedral_remeshing/refine_tetrahedral_mesh.h>
 
@@ -81,6 +82,9 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 /// (`Hexahedral_remeshing_result::sweep_fallback`, `repair_fallback`). When a tetrahedral mesh coarser than the
 /// hexahedra (fewer than 12 tetrahedra per hexahedron) gives no valid hex mesh, its red refinement is tried
 /// and kept if its mesh is valid (`Hexahedral_remeshing_result::refinement`, `tetrahedron_refinement`).
+/// When all this gives no valid mesh, it runs again with the frame field smoothed from the boundary
+/// propagation instead of the relaxation (`Frame_field_initialization`), kept if valid
+/// (`Hexahedral_remeshing_result::field_restart`).
 ///
 /// \tparam Input `Hexahedral_remeshing::Tetrahedral_mesh_3<Traits>`, a CGAL
 ///         `Mesh_complex_3_in_triangulation_3` (its cells, surface patches, feature curves and corners;
@@ -134,6 +138,12 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{frame_field_initialization}
+///     \cgalParamDescription{the field the frame-field smoothing starts from; `AUTOMATIC`: the relaxation,
+///       then, if everything else gave no valid hex mesh, the boundary propagation}
+///     \cgalParamType{`Hexahedral_remeshing::Frame_field_initialization`}
+///     \cgalParamDefault{`Frame_field_initialization::AUTOMATIC`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{refined_mesh_output}
 ///     \cgalParamDescription{receives the refined tetrahedral mesh when the hex mesh comes from it
 ///       (its first vertices are the input's; `frame_field` and the map refer to it)}
@@ -167,7 +177,7 @@ hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& 
     HR::hexahedral_mesh_to_lcc(hexes, output);
     return r;
   } else if constexpr(HR::internal::Is_tetrahedral_mesh<Input>::value) {
-    return HR::internal::run_hexahedral_remeshing_or_refine(input, output, np);
+    return HR::internal::run_hexahedral_remeshing_with_restart(input, output, np);
   } else {
     typedef std::chrono::steady_clock Clock;
     const auto start = Clock::now();
@@ -192,7 +202,7 @@ hexahedral_remeshing(const Input& input, Output& output, const NamedParameters& 
     Mesh mesh;
     HR::build_tetrahedral_mesh(soup, mesh, HR::parameters::split_boundary_chords(true));
     const double preprocessing = std::chrono::duration<double>(Clock::now() - start).count();
-    HR::Hexahedral_remeshing_result r = HR::internal::run_hexahedral_remeshing_or_refine(mesh, output, np);
+    HR::Hexahedral_remeshing_result r = HR::internal::run_hexahedral_remeshing_with_restart(mesh, output, np);
     r.preprocessing_seconds = preprocessing;
     r.seconds += preprocessing;
     return r;

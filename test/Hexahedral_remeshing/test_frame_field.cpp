@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 #include <iostream>
 #ifdef _OPENMP
@@ -701,4 +703,59 @@ TEST(FrameField, FramesComeBackInTheMeshOrder)
   const auto p = HR::internal::make_frame_field_problem(m, directions, HR::internal::Face_weighting::AREA_OVER_DISTANCE);
   EXPECT_NEAR(HR::internal::frame_field_energy(p, frames), r.energy, 1e-9 * r.energy);
   EXPECT_LT(r.energy, r.initial_energy);
+}
+
+// The boundary propagation (frame_field_initialization): the boundary tets keep the relaxation's frames
+// exactly, and every other tet gets a copy of the frame of a nearby boundary tet. On the cylinder (radius 1, height
+// 2), every tet nearer the side than the caps (and not near the axis) gets a frame with an axis within 20
+// degrees of its radial direction (the side has 32 facets, 11.25 degrees apart): checked
+// from the geometry of the cylinder, not from the propagation's own distances.
+TEST(FrameField, BoundaryPropagationCarriesTheNearestBoundaryFrameInwards)
+{
+  namespace HP = HR::parameters;
+  const Mesh m = load(example_data + "/cylinder.off", 0.004);
+  const auto normals = HR::boundary_triangle_unit_normals(m);
+  std::vector<Eigen::Matrix3d> relaxed, propagated;
+  const HR::Frame_field_result rr = HR::compute_frame_field(
+    m, normals, relaxed, HP::frame_field_initialization(HR::Frame_field_initialization::RELAXATION, HP::smoothing(false)));
+  const HR::Frame_field_result rp = HR::compute_frame_field(
+    m, normals, propagated, HP::frame_field_initialization(HR::Frame_field_initialization::BOUNDARY_PROPAGATION, HP::smoothing(false)));
+  EXPECT_EQ(rr.initialization, HR::Frame_field_initialization::RELAXATION);
+  EXPECT_EQ(rp.initialization, HR::Frame_field_initialization::BOUNDARY_PROPAGATION);
+  std::vector<bool> on_boundary(m.number_of_tetrahedra(), false);
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b) on_boundary[m.boundary_triangle_tetrahedron(b)] = true;
+  std::set<std::array<double, 9> > boundary_frames;
+  auto key = [](const Eigen::Matrix3d& f) {
+    std::array<double, 9> k;
+    std::copy(f.data(), f.data() + 9, k.begin());
+    return k;
+  };
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t)
+    if(on_boundary[t]) boundary_frames.insert(key(relaxed[t]));
+  std::size_t side = 0, radial = 0;
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    if(on_boundary[t]) {
+      ASSERT_TRUE(propagated[t] == relaxed[t]) << "boundary tetrahedron " << t;
+      continue;
+    }
+    // a copy of a boundary tet's frame
+    ASSERT_EQ(boundary_frames.count(key(propagated[t])), 1u) << "tetrahedron " << t;
+    const Eigen::Vector3d c = centroid(m, t);
+    const double rho = std::hypot(c.x(), c.y());
+    // near the axis the paths along the adjacency from sides 30 degrees apart differ too little
+    if(rho < 0.5 || 1 - rho > std::min(c.z(), 2 - c.z()) - 0.25) continue;
+    ++side;
+    const Eigen::Vector3d r(c.x() / rho, c.y() / rho, 0);
+    if((propagated[t].transpose() * r).cwiseAbs().maxCoeff() > std::cos(CGAL_PI / 9)) ++radial;
+  }
+  ASSERT_GT(side, 50u);
+  EXPECT_EQ(radial, side);
+  // the smoothing starts from it and lowers its energy
+  std::vector<Eigen::Matrix3d> smoothed;
+  const HR::Frame_field_result rs = HR::compute_frame_field(
+    m, normals, smoothed, HP::frame_field_initialization(HR::Frame_field_initialization::BOUNDARY_PROPAGATION));
+  EXPECT_DOUBLE_EQ(rs.initial_energy, rp.initial_energy);
+  EXPECT_LT(rs.energy, rs.initial_energy);
+  for(Index b = 0; b < m.number_of_boundary_triangles(); ++b)
+    ASSERT_NEAR((smoothed[m.boundary_triangle_tetrahedron(b)].transpose() * normals[b]).cwiseAbs().maxCoeff(), 1.0, 1e-9);
 }

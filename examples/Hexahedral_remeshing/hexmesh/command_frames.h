@@ -41,7 +41,7 @@ inline std::vector<std::string> frames_options()
 {
   std::vector<std::string> options = input_options();
   for(const char* o : {"heuristic", "valences", "frames", "singularities", "json", "valences-out", "cubecover", "threads",
-                       "acute-edge-band"})
+                       "acute-edge-band", "field-initialization"})
     options.push_back(o);
   return options;
 }
@@ -75,6 +75,10 @@ struct Frame_field_options
   bool relocation = false;
   // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
   double acute_edge_band = -1;
+  // --field-initialization: the field the smoothing starts from (remesh: the relaxation, then the
+  // boundary propagation if no valid hex mesh came out; frames and parametrize: the relaxation)
+  CGAL::Hexahedral_remeshing::Frame_field_initialization initialization =
+    CGAL::Hexahedral_remeshing::Frame_field_initialization::AUTOMATIC;
 };
 
 inline Frame_field_options frame_field_options(const Arguments& args)
@@ -93,6 +97,12 @@ inline Frame_field_options frame_field_options(const Arguments& args)
     o.acute_edge_band = args.number("acute-edge-band", 0.);
     if(!(o.acute_edge_band >= 0) || !std::isfinite(o.acute_edge_band))
       throw Usage_error("option --acute-edge-band expects a radius >= 0 in model units (0: no band)");
+  }
+  if(args.has("field-initialization")) {
+    const std::string v = args.value("field-initialization");
+    if(v == "relaxation") o.initialization = CGAL::Hexahedral_remeshing::Frame_field_initialization::RELAXATION;
+    else if(v == "propagation") o.initialization = CGAL::Hexahedral_remeshing::Frame_field_initialization::BOUNDARY_PROPAGATION;
+    else throw Usage_error("option --field-initialization expects relaxation or propagation, not '" + v + "'");
   }
   if(o.baseline && (args.has("heuristic") || args.has("valences")))
     throw Usage_error("--baseline aligns the field with the normals: it takes no --heuristic nor --valences");
@@ -271,7 +281,8 @@ run_frame_field_pipeline(const Frame_field_options& o, const std::string& in, co
     return HR::compute_frame_field_pipeline(
       mesh, HP::valence_heuristic(o.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
                                   HP::baseline(o.baseline, HP::realignment(o.realign, HP::singularity_repair(o.repair,
-                                  HP::repair_hex_edge_length(hex_edge, HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band))))))).visitor(std::ref(visitor)));
+                                  HP::repair_hex_edge_length(hex_edge, HP::acute_edge_band_radius(o.acute_edge_band >= 0 ? o.acute_edge_band : band,
+                                  HP::frame_field_initialization(o.initialization)))))))).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {
@@ -362,6 +373,8 @@ inline int command_frames(const Arguments& args)
         .end();
     json.begin("frame_field")
         .value("energy", r.frame_field.energy)
+        .value("initialization", r.frame_field.initialization == HR::Frame_field_initialization::BOUNDARY_PROPAGATION
+                                   ? "boundary_propagation" : "relaxation")
         .value("initial_energy", r.frame_field.initial_energy)
         .value("relaxation_iterations", r.frame_field.relaxation_iterations)
         .value("relaxation_residual", r.frame_field.relaxation_residual)
@@ -439,7 +452,8 @@ inline int command_frames(const Arguments& args)
               << " deg), " << r.constraints.failed_faces.size() << " triangles with E_i >= pi/4\n"
               << std::setprecision(4)
               << "  frame field         energy " << r.frame_field.energy << " (" << r.frame_field.initial_energy
-              << " after the relaxation), " << r.frame_field.smoothing_iterations << " L-BFGS iterations"
+              << (r.frame_field.initialization == HR::Frame_field_initialization::BOUNDARY_PROPAGATION
+                      ? " after the boundary propagation), " : " after the relaxation), ") << r.frame_field.smoothing_iterations << " L-BFGS iterations"
               << (r.fixed_frames.empty() ? std::string() : ", " + std::to_string(r.fixed_frames.size()) +
                                                               " frames fixed at acute valence-1 edges")
               << "\n"

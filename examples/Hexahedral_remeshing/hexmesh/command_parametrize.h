@@ -30,7 +30,7 @@ inline std::vector<std::string> parametrize_options()
 {
   std::vector<std::string> options = input_options();
   for(const char* o : {"heuristic", "valences", "hexex", "vtk", "json", "valences-out", "target-edge-length", "threads",
-                       "acute-edge-band"})
+                       "acute-edge-band", "field-initialization"})
     options.push_back(o);
   return options;
 }

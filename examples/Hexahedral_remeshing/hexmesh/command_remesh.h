@@ -28,7 +28,8 @@ inline std::vector<std::string> remesh_options()
 {
   std::vector<std::string> options = input_options();
   for(const char* o : {"out", "heuristic", "valences", "frames", "singularities", "json", "valences-out",
-                       "target-edge-length", "hexahedra", "threads", "hexex", "acute-edge-band"})
+                       "target-edge-length", "hexahedra", "threads", "hexex", "acute-edge-band",
+                       "field-initialization"})
     options.push_back(o);
   return options;
 }
@@ -73,7 +74,8 @@ inline int command_remesh(const Arguments& args)
         HP::baseline(options.baseline, HP::realignment(options.realign, HP::singularity_repair(options.repair,
         HP::hexahedral_smoothing(!args.has("no-smoothing"), HP::acute_edge_band_radius(options.acute_edge_band,
         HP::quantization(options.quantization, HP::singular_vertex_relocation(options.relocation, HP::integer_grid_map_output(std::ref(map),
-        HP::tetrahedron_refinement(!args.has("no-tet-refinement"), HP::refined_mesh_output(std::ref(refined), size)))))))))))).visitor(std::ref(visitor)));
+        HP::tetrahedron_refinement(!args.has("no-tet-refinement"), HP::refined_mesh_output(std::ref(refined),
+        HP::frame_field_initialization(options.initialization, size))))))))))))).visitor(std::ref(visitor)));
   };
   try {
     if(target > 0) r = run(HP::target_edge_length(target));
@@ -121,6 +123,12 @@ inline int command_remesh(const Arguments& args)
         .value("used", r.refinement.used)
         .value("other_outcome", r.refinement.other_outcome)
         .value("other_seconds", r.refinement.other_seconds)
+        .end();
+    json.begin("field_restart")
+        .value("tried", r.field_restart.tried)
+        .value("used", r.field_restart.used)
+        .value("other_outcome", r.field_restart.other_outcome)
+        .value("other_seconds", r.field_restart.other_seconds)
         .end();
     json.begin("frame_field")
         .value("energy", f.frame_field.energy)
@@ -207,6 +215,11 @@ inline int command_remesh(const Arguments& args)
                 << (r.refinement.rounds == 1 ? " round" : " rounds") << " of 1-to-8, " << r.refinement.tetrahedra
                 << " tetrahedra; the " << (r.refinement.used ? "mesh as given" : "refined mesh") << " gave "
                 << r.refinement.other_outcome << "\n";
+    if(r.field_restart.tried)
+      std::cout << "  field restart       " << (r.field_restart.used ? "used" : "tried")
+                << ": the frame field smoothed from the boundary propagation; the "
+                << (r.field_restart.used ? "relaxation's field" : "propagated field") << " gave "
+                << r.field_restart.other_outcome << "\n";
     print_integer_grid_map(std::cout, r.map, r.map_check, agreement);
     if(hexes.number_of_hexahedra() > 0) {
       print_hexahedral_mesh_check(std::cout, r.check);

@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/boundary_triangle_normals.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
+#include <CGAL/Hexahedral_remeshing/internal/frame_field/boundary_propagation.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/relaxation.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/problem.h>
 #include <CGAL/Hexahedral_remeshing/internal/frame_field/smoothing.h>
@@ -32,6 +33,25 @@ enum class Face_weights
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
+/// The field the L-BFGS smoothing starts from.
+enum class Frame_field_initialization
+{
+  /// `RELAXATION` for `compute_frame_field()`; `CGAL::hexahedral_remeshing()` starts from the relaxation
+  /// and, if that gives no valid hex mesh, runs again from the boundary propagation.
+  AUTOMATIC,
+  /// The projected convex relaxation of Ray et al.: the harmonic extension of the boundary's spherical
+  /// harmonics, projected to frames.
+  RELAXATION,
+  /// Every tetrahedron without a boundary face takes the frame of the nearest tetrahedron with one (the
+  /// relaxation's frame there; nearest along the tetrahedra's adjacency, by centroid distance). Where the
+  /// boundary frames turn around an axis (a torus's tube) the relaxation vanishes near the axis, its
+  /// projection is arbitrary and the smoothing can keep a twisted field (the HexMe torus `s16c`: 3
+  /// singular curves irregularly around the tube, a map with 145 inverted tetrahedra); the propagated
+  /// field has the boundary's pattern on every layer and gives a valid hex mesh there.
+  BOUNDARY_PROPAGATION
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of the frame-field stages: every hook does nothing. Derive from it and pass it
 /// with the named parameter `visitor` to follow the progress.
 struct Frame_field_visitor
@@ -49,7 +69,10 @@ struct Frame_field_visitor
 /// Outcome of `compute_frame_field()`.
 struct Frame_field_result
 {
-  /// Smoothness energy `sum_f w_f |q_i - q_j|^2` of the projected relaxation.
+  /// The field the smoothing started from (`RELAXATION` or `BOUNDARY_PROPAGATION`).
+  Frame_field_initialization initialization = Frame_field_initialization::RELAXATION;
+  /// Smoothness energy `sum_f w_f |q_i - q_j|^2` of the field the smoothing starts from (the projected
+  /// relaxation, or its boundary propagation).
   double initial_energy = 0;
   /// Smoothness energy of the returned frames.
   double energy = 0;
@@ -123,6 +146,11 @@ std::vector<std::uint32_t> solver_order(const Tetrahedral_mesh_3<Traits>& mesh, 
 ///     \cgalParamType{`Face_weights`}
 ///     \cgalParamDefault{`Face_weights::AREA_OVER_DISTANCE`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{frame_field_initialization}
+///     \cgalParamDescription{the field the smoothing starts from (`AUTOMATIC` is `RELAXATION` here)}
+///     \cgalParamType{`Frame_field_initialization`}
+///     \cgalParamDefault{`Frame_field_initialization::AUTOMATIC`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing}
 ///     \cgalParamDescription{run the L-BFGS smoothing after the relaxation}
 ///     \cgalParamType{`bool`}
@@ -178,6 +206,9 @@ Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
   using CGAL::parameters::get_parameter_reference;
   const Face_weights weights = choose_parameter(get_parameter(np, internal_np::face_weights), Face_weights::AREA_OVER_DISTANCE);
   const bool smooth = choose_parameter(get_parameter(np, internal_np::smoothing), true);
+  const bool propagate = choose_parameter(get_parameter(np, internal_np::frame_field_initialization),
+                                          Frame_field_initialization::AUTOMATIC) ==
+                         Frame_field_initialization::BOUNDARY_PROPAGATION;
   const int max_iterations = choose_parameter(get_parameter(np, internal_np::maximum_smoothing_iterations), 2000);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-7);
   const double cg_tolerance = choose_parameter(get_parameter(np, internal_np::relaxation_tolerance), 1e-6);
@@ -210,6 +241,10 @@ Frame_field_result compute_frame_field(const Tetrahedral_mesh_3<Traits>& mesh,
   frames = relaxation->project(
     relaxation->solve(cg_tolerance, 20000, result.relaxation_iterations, result.relaxation_residual));
   relaxation.reset();
+  if(propagate) {
+    internal::propagate_boundary_frames(problem, internal::tetrahedron_centroids(mesh, problem), frames);
+    result.initialization = Frame_field_initialization::BOUNDARY_PROPAGATION;
+  }
   result.initial_energy = internal::frame_field_energy(problem, frames);
   result.initialization_seconds = seconds_since(t);
   visitor.end_stage("initialization", result.initialization_seconds);

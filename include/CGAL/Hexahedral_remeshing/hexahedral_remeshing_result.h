@@ -125,6 +125,23 @@ struct Tetrahedron_refinement_report
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
+/// The run of `CGAL::hexahedral_remeshing()` from a second starting field: when the field smoothed from
+/// the relaxation gives no valid hex mesh (after the repair's fallbacks and the refinement), everything
+/// runs again from the boundary propagation (`Frame_field_initialization`, named parameter
+/// `frame_field_initialization` left to `AUTOMATIC`).
+struct Frame_field_restart_report
+{
+  /// True if the second run took place.
+  bool tried = false;
+  /// True if the hex mesh and every report come from the second run (valid there, not from the relaxation).
+  bool used = false;
+  /// The status, failed stage and message of the run whose result was not kept.
+  std::string other_outcome;
+  /// Seconds of the run whose result was not kept (included in `Hexahedral_remeshing_result::seconds`).
+  double other_seconds = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
 /// Everything `CGAL::hexahedral_remeshing()` computes, stage by stage.
 struct Hexahedral_remeshing_result
 {
@@ -155,6 +172,8 @@ struct Hexahedral_remeshing_result
   std::string repaired_field_outcome;
   /// The run on the refined tetrahedral mesh, if any (`tetrahedron_refinement`).
   Tetrahedron_refinement_report refinement;
+  /// The run from the boundary propagation, if any (`frame_field_initialization`).
+  Frame_field_restart_report field_restart;
   /// Valences, constraints, frame field, matchings, singularity graph, realignment.
   Frame_field_pipeline_result frame_field;
   /// Report of the integer-grid map (target edge length used, status, inverted tetrahedra, ...).

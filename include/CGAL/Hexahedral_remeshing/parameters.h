@@ -30,6 +30,7 @@ enum smoothing_tolerance_t { smoothing_tolerance };
 enum relaxation_tolerance_t { relaxation_tolerance };
 enum fixed_frames_t { fixed_frames };
 enum tetrahedron_order_t { tetrahedron_order };
+enum frame_field_initialization_t { frame_field_initialization };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -83,6 +84,9 @@ template <class T> unspecified_type fixed_frames(const T& value);
 /// their indices (`std::vector<std::uint32_t>`; empty: the mesh's own order; default: along a Hilbert
 /// curve on meshes of 30,000 tetrahedra or more). The results come back in the mesh's order whatever it is.
 template <class T> unspecified_type tetrahedron_order(const T& value);
+/// Frame field: the field the smoothing starts from (`Frame_field_initialization`, default
+/// `Frame_field_initialization::AUTOMATIC`).
+template <class T> unspecified_type frame_field_initialization(const T& value);
 /// Split every interior edge joining two boundary vertices at its midpoint (`bool`, default `false`).
 template <class T> unspecified_type split_boundary_chords(const T& value);
 #else
@@ -94,6 +98,7 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(smoothing_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(relaxation_tolerance)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(fixed_frames)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(tetrahedron_order)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(frame_field_initialization)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(split_multi_boundary_tetrahedra)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(preserve_surface_triangles)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_tetrahedron_volume)
