@@ -6,7 +6,8 @@
 # curves removed / found at the hex scale), hex count, scaled Jacobian, Hausdorff distance,
 # feature coverage, hex edges on sharp edges with the prescribed valence, seconds per stage and peak memory;
 # cells: those the extraction left out / completed from their neighbours (resolve_conflicting_cells); refine: the
-# second run on the refined tetrahedra of a coarse mesh that failed as given (used / tried, rounds); total_s: both runs.
+# second run on the refined tetrahedra of a coarse mesh that failed as given (used / tried, rounds); +prop / +prop?: the
+# whole run again from the boundary propagation (field_restart) kept / tried; total_s: every run.
 #   benchmark/Hexahedral_remeshing/remesh_table.sh [--baseline-too] [--no-repair-too] [--timeout S] [FILE or FOLDER...]
 # Needs a build (scripts/build) and python3; writes the JSON reports under build/remesh_table/.
 set -uo pipefail
@@ -52,6 +53,9 @@ cells = '%d/%d' % (ex.get('incomplete_cells', 0), ex.get('resolved_cells', 0))
 # a second run on the refined tetrahedra of a coarse mesh (tetrahedron_refinement): used or only tried
 tr = r.get('tetrahedron_refinement', {})
 refine = '-' if not tr.get('rounds') else '%s %d' % ('used' if tr.get('used') else 'tried', tr['rounds'])
+# the whole run again from the boundary propagation (field_restart): "+prop" if its mesh was kept, "+prop?" if tried
+fr = r.get('field_restart', {})
+refine += ' +prop' if fr.get('used') else ' +prop?' if fr.get('tried') else ''
 print('%-28s %-10s %8d %7d %-17s %-12s %9s %-13s %7s %6.3f %6.3f %9s %6.3f %9s %8.2f %8.3f %8.2f %8.2f %8.2f %7.0f %-8s %8.2f' % (
     name, mode, r['tetrahedra'], h['hexahedra'], r['status'], r.get('failed_stage') or '-', defects, repair, cells,
     h['min_scaled_jacobian'], h['mean_scaled_jacobian'],
