@@ -239,11 +239,14 @@ r = json.load(open(sys.argv[1]))
 assert r['status'] == 'OK' and r['hex_mesh']['hexahedra'] == 27 and r['hex_mesh']['valid']
 assert abs(r['integer_grid_map']['target_edge_length'] - 1 / 3) < 1e-9
 for k in ('frame_field', 'integer_grid_map', 'extraction', 'smoothing', 'hex_mesh', 'features', 'seconds'): assert k in r, k
+# valid from the relaxation: no restart from the boundary propagation
+assert r['frame_field']['initialization'] == 'relaxation' and not r['field_restart']['tried'] and not r['field_restart']['used']
 " "$tmp/remesh.json" || fail "remesh JSON: $(cat "$tmp/remesh.json")"
 expect_error 2 "either --target-edge-length or --hexahedra" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --hexahedra 8 --target-edge-length 0.5
 expect_error 2 "expects a positive length" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --target-edge-length -1
 expect_error 2 "acute-edge-band expects a radius >= 0" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --acute-edge-band -1
 expect_error 2 "acute-edge-band expects a" parametrize "$data/cube.off" --hexex "$tmp/x/a.hexex" --acute-edge-band nan
+expect_error 2 "field-initialization expects relaxation or propagation" remesh "$data/cube.off" --out "$tmp/x/a.mesh" --field-initialization twisted
 [ -z "$(ls -A "$tmp/x")" ] || fail "failed remesh runs left files behind: $(ls "$tmp/x")"
 # a surface without --max-volume is tetrahedralized at the hex size; --valences-out of that run read back
 "$hexmesh" remesh "$data/cube.off" --hexahedra 64 --quiet --out "$tmp/cube64a.mesh" --valences-out "$tmp/cube64.txt" \

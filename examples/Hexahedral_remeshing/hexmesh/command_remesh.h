@@ -132,6 +132,8 @@ inline int command_remesh(const Arguments& args)
         .end();
     json.begin("frame_field")
         .value("energy", f.frame_field.energy)
+        .value("initialization", f.frame_field.initialization == HR::Frame_field_initialization::BOUNDARY_PROPAGATION
+                                   ? "boundary_propagation" : "relaxation")
         .value("E_initial", f.constraints.initial_energy)
         .value("E_final", f.constraints.final_energy)
         .value("valence3_curves", f.singularities.number_of_curves(3))
