@@ -55,10 +55,7 @@ Hexahedral_remeshing_result run_hexahedral_remeshing_with_restart(const Tetrahed
   kept.field_restart.other_seconds = other.seconds;
   kept.seconds += other.seconds;
   if(kept.field_restart.used) {
-    Integer_grid_map own_map;
-    Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
-    map = std::move(other_map);
-    hexes = std::move(other_hexes);
+    adopt_map_and_hexahedra(np, other_map, other_hexes, hexes);
     if(kept.refinement.used) {
       Tetrahedral_mesh_3<Traits> own_mesh;
       Tetrahedral_mesh_3<Traits>& out = choose_parameter(get_parameter_reference(np, internal_np::refined_mesh_output), own_mesh);

@@ -90,10 +90,7 @@ Hexahedral_remeshing_result run_hexahedral_remeshing_or_refine(const Tetrahedral
   kept.refinement.other_seconds = other.seconds;
   kept.seconds += other.seconds;
   if(kept.refinement.used) {
-    Integer_grid_map own_map;
-    Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
-    map = std::move(fine_map);
-    hexes = std::move(fine_hexes);
+    adopt_map_and_hexahedra(np, fine_map, fine_hexes, hexes);
     Tetrahedral_mesh_3<Traits> own_mesh;
     Tetrahedral_mesh_3<Traits>& out = choose_parameter(get_parameter_reference(np, internal_np::refined_mesh_output), own_mesh);
     out = std::move(fine);

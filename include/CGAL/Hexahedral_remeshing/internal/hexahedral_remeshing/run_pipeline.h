@@ -394,6 +394,20 @@ Hexahedral_remeshing_result run_pipeline_once(const Tetrahedral_mesh_3<Traits>& 
   return r;
 }
 
+// Hands the map and hex mesh of a run that replaces the first one to the caller: the map to
+// `integer_grid_map_output` (if given), the hexahedra to `hexes`.
+template <class NamedParameters>
+void adopt_map_and_hexahedra(const NamedParameters& np, Integer_grid_map& other_map, Hexahedral_mesh_3& other_hexes,
+                             Hexahedral_mesh_3& hexes)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  Integer_grid_map own_map;
+  Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
+  map = std::move(other_map);
+  hexes = std::move(other_hexes);
+}
+
 // The pipeline with the named parameters `np`, kept in place of `r` (with its hex mesh and map) if its hex
 // mesh is valid; `r`'s seconds are added to the result kept either way.
 template <class Traits, class NamedParameters, class OtherParameters>
@@ -408,12 +422,7 @@ bool keep_if_valid(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& he
     r.seconds += other.seconds;
     return false;
   }
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter_reference;
-  Integer_grid_map own_map;
-  Integer_grid_map& map = choose_parameter(get_parameter_reference(np, internal_np::integer_grid_map_output), own_map);
-  map = std::move(other_map);
-  hexes = std::move(other_hexes);
+  adopt_map_and_hexahedra(np, other_map, other_hexes, hexes);
   other.repaired_field_outcome = std::string(status_name(r.status)) + " (failed at the " + r.failed_stage + " stage): " + r.message;
   other.seconds += r.seconds;
   r = std::move(other);
