@@ -2,6 +2,7 @@
 #ifndef HEXREM_TEST_SHARED_MODELS_H
 #define HEXREM_TEST_SHARED_MODELS_H
 
+#include "data_paths.h"
 #include <algorithm>
 #include <filesystem>
 #include <string>

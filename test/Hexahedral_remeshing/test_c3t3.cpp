@@ -1,6 +1,7 @@
 // C3t3 input: mesh the shipped cube with CGAL Mesh_3 with sharp features, convert the complex with
 // tetrahedral_soup_from_c3t3() and build the Tetrahedral_mesh_3 from it.
 // This is the only Mesh_3 translation unit of the tests (it compiles slowly): keep it that way.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/tetrahedral_soup_from_c3t3.h>

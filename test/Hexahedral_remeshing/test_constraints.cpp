@@ -2,6 +2,7 @@
 // constraints (Sec. 4 and 6.2): heuristics with exact thresholds, prescriptions and their errors,
 // the a-b-k file format, orientation conventions, Algorithms 1 and 2, the acute model, double
 // slopes with valences 4 and 5, every model of ../shared/data, determinism.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/edge_valences.h>
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_boundary.h>

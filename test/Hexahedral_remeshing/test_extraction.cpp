@@ -1,4 +1,5 @@
 // Tests of the .hexex IO, of the integer-grid map check and of the hexahedral extraction.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>

@@ -1,5 +1,6 @@
 // Tests of the frame field, the matchings, the singularity graph and the achieved boundary
 // valences, on the oracles of the design guide (section 7).
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/frame_field.h>

@@ -3,6 +3,7 @@
 // clear Input_error or repaired. Fixtures: test/Hexahedral_remeshing/data/inputs (written by
 // make_inputs.py from unit cubes, so that volumes and components are known exactly); binary
 // variants and CAD parts are written here at test time.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/mesh_statistics.h>
 

@@ -1,6 +1,7 @@
 // Tests of the seamless integer-grid map (issue 9). Every map is checked from its parameters alone
 // by an independent checker (exact orientation, transitions recovered from the corner values,
 // integer planes and lines, parameter-space dihedral angles), never from the code's own flags.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>

@@ -1,5 +1,6 @@
 // Tests of the foundation: readers, input validation, topology of Tetrahedral_mesh_3, exact
 // dihedral classes, TetGen inputs.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>

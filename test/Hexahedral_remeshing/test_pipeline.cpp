@@ -1,6 +1,7 @@
 // Tests of the whole frame-field pipeline (valences -> constraints -> frame field -> matchings ->
 // realignment): the prism and acute-edge oracles, every shared model, realignment invariants,
 // determinism across thread counts, and the Surface_mesh entry.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/boundary_dihedral_angles.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>

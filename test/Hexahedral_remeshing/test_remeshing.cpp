@@ -2,6 +2,7 @@
 // Tetrahedral_mesh_3, a closed Surface_mesh), outputs (Hexahedral_mesh_3, CGAL's LCC), sizes, the report,
 // and bad parameters. The hex meshes are checked from their cells here (counts, orientation of every
 // corner, conformity by quad keys, volume), not from the package's own flags.
+#include "data_paths.h"
 #include <CGAL/hexahedral_remeshing.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -7,6 +7,7 @@
 // side (taken off it), frames that end a curve inside (no dangling end: the matchings continue it), the
 // valid node of a tetrahedron (kept) and the invalid eight-curve node of the cubed sphere (reported), and
 // every model of ../shared/data (never worse).
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/IO/write_VTK_frame_field.h>
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_soup_3.h>

@@ -1,4 +1,5 @@
 // Tests of the foldover-free minimizer (Garanzha et al. 2021) and of the hexahedral mesh smoothing.
+#include "data_paths.h"
 #include <CGAL/Hexahedral_remeshing/IO/read_HexEx.h>
 #include <CGAL/Hexahedral_remeshing/build_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
