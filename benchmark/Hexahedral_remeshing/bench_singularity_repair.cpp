@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "improper/jog/zipper/node/contact/plane" (plane: curve ends in a boundary plane; dangling ends are
+// "improper/jog/zipper/node/contact/plane/zigzag" (plane: curve ends in a boundary plane; dangling ends are
 // impossible with exact matchings: printed only when present), then the feature sectors and the
 // disagreeing faces
 std::string counts(const std::array<std::size_t, HR::number_of_meshability_reasons>& c)
@@ -33,7 +33,7 @@ std::string counts(const std::array<std::size_t, HR::number_of_meshability_reaso
   typedef HR::Meshability_reason R;
   auto n = [&](R r) { return std::to_string(c[std::size_t(r)]); };
   std::string s = n(R::IMPROPER_EDGE) + "/" + n(R::JOG) + "/" + n(R::ZIPPER) + "/" + n(R::INVALID_NODE) + "/" +
-                  n(R::BOUNDARY_CONTACT) + "/" + n(R::END_IN_BOUNDARY_PLANE);
+                  n(R::BOUNDARY_CONTACT) + "/" + n(R::END_IN_BOUNDARY_PLANE) + "/" + n(R::ZIGZAG_FACE);
   if(c[std::size_t(R::DANGLING_END)] > 0) s += " dangling " + n(R::DANGLING_END);
   return s;
 }
@@ -95,7 +95,7 @@ int main(int argc, char** argv)
       files.insert(files.end(), found.begin(), found.end());
     }
   }
-  std::cout << "defects improper/jog/zipper/node/contact/plane: field of step 3 before the repair | realigned field after the"
+  std::cout << "defects improper/jog/zipper/node/contact/plane/zigzag: field of step 3 before the repair | realigned field after the"
                " surgery | returned field (kept matchings) | returned frames alone; disagreeing faces and feature sectors after the realignment;"
                " changes by operation (move/zigzag/search/slide jog/slide end/sweep/hex scale; x: not kept); clusters of curves removed/found at the"
                " hex scale; seconds of the repair and of the frame field (median of "

@@ -153,7 +153,7 @@ def singularities(path, json_path):
     check(lines[i].split() == ['POINT_DATA', str(npoints)], path + ': POINT_DATA')
     points, _ = read_arrays(lines, i + 1, npoints)
     check('reason' in points, path + ': point array reason')
-    vertex_reasons = {2: 'dangling_end', 3: 'zipper', 4: 'invalid_node', 5: 'boundary_contact', 8: 'end_in_boundary_plane'}
+    vertex_reasons = {2: 'dangling_end', 3: 'zipper', 4: 'invalid_node', 5: 'boundary_contact', 8: 'end_in_boundary_plane', 9: 'zigzag_face'}
     check(all(r == -1 or r in vertex_reasons for r in points['reason'][1]), path + ': vertex reason values')
     for k, key in vertex_reasons.items():
         n = sum(1 for r in points['reason'][1] if r == k)

@@ -1,7 +1,8 @@
 // Tests of the local meshability check and of the repair of the singularity graph, checked against
 // the independent evaluation of the holonomies of independent_holonomy.h (not the package's flags):
 // a field with one straight valence-3 axis (meshable, left bitwise unchanged), the same field with a
-// zigzag (repaired back to the straight axis), a small closed loop with a zipper (removed), a close pair of
+// zigzag (repaired back to the straight axis), a curve bending across one face (a zigzag face: reported
+// and straightened), a small closed loop with a zipper (removed), a close pair of
 // valence-3 and valence-5 curves (removed at the hex scale), a curve bent into a side face and one whose end
 // was moved onto a box edge (ends in a boundary plane: reported; the second slid back), a curve touching a
 // side (taken off it), frames that end a curve inside (no dangling end: the matchings continue it), the
@@ -81,14 +82,18 @@ independent::Field_verdict evaluate_matchings(const Mesh& m, const std::vector<E
 // below mirrored in that plane (their diagonals (1,1,-2): still conforming, the faces z = const keep
 // theirs), so that a curve of the plane y = 0 can reach the side x = 3 at z = 4 and leave it upwards
 // within 45 degrees of z.
-Mesh kuhn_box(bool mirrored_top = false)
+// `moved`: grid points moved elsewhere (the caller checks that no tetrahedron inverts).
+Mesh kuhn_box(bool mirrored_top = false, const std::vector<std::pair<Point, Point> >& moved = {})
 {
   HR::Tetrahedral_soup_3<Point> soup;
   const int n = 3, h = 4;
   auto id = [&](int i, int j, int k) { return std::size_t(((k * (2 * n + 1)) + (j + n)) * (2 * n + 1) + (i + n)); };
   for(int k = 0; k <= h; ++k)
     for(int j = -n; j <= n; ++j)
-      for(int i = -n; i <= n; ++i) soup.points.emplace_back(i, j, 2 * k);
+      for(int i = -n; i <= n; ++i) {
+        soup.points.emplace_back(i, j, 2 * k);
+        for(const auto& m : moved) if(m.first == soup.points.back()) soup.points.back() = m.second;
+      }
   const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   for(int k = 0; k < h; ++k)
     for(int j = -n; j < n; ++j)
@@ -196,6 +201,80 @@ TEST(Meshability, ZigzagRepairedToTheStraightAxis)
     EXPECT_EQ(s.kind, straight.singular[0].kind); // the same valence
   }
   EXPECT_EQ(matchings.face_matching[zigzag_face], original);
+}
+
+// The axis of kuhn_box with the grid point (1,1,4) moved to (0.5,0.5,3), beside the axis edge
+// a = (0,0,2), c = (0,0,4): the triangle a-v-c is a face, and moving the axis edge a-c across it gives
+// the curve a-v-c, whose two edges are 35 degrees off the axis (not jogs) and whose chord a-c is a
+// regular edge: the map puts a, v and c on one parameter line, so both tetrahedra on the face are flat
+// in every map (the flange of make_parts.py had three). Checked independently: the two singular edges
+// of the evaluation of the holonomies span a face of the mesh; the check reports it at v and the
+// repair takes the curve back to the straight axis.
+TEST(Meshability, ZigzagFaceReportedAndStraightened)
+{
+  const Mesh m = kuhn_box(false, {{Point(1, 1, 4), Point(0.5, 0.5, 3)}});
+  const auto points = points_of(m);
+  for(Index t = 0; t < m.number_of_tetrahedra(); ++t) {
+    const auto& tv = m.tetrahedron_vertices(t);
+    const Eigen::Vector3d p0 = points[tv[0]];
+    ASSERT_GT((points[tv[1]] - p0).cross(points[tv[2]] - p0).dot(points[tv[3]] - p0), 0.) << "tetrahedron " << t << " inverted";
+  }
+  const auto frames = axis_field(m);
+  HR::Matchings matchings = HR::compute_matchings(m, frames);
+  const auto straight = evaluate_matchings(m, frames, matchings);
+  ASSERT_EQ(straight.singular.size(), 4u);
+  Index a = Mesh::null_index, c = Mesh::null_index, v = Mesh::null_index;
+  for(Index u = 0; u < m.number_of_vertices(); ++u) {
+    if(on_axis(points[u]) && points[u].z() == 2) a = u;
+    if(on_axis(points[u]) && points[u].z() == 4) c = u;
+    if((points[u] - Eigen::Vector3d(0.5, 0.5, 3)).norm() < 1e-12) v = u;
+  }
+  const Index chord = m.find_edge(a, c);
+  ASSERT_NE(chord, Mesh::null_index);
+  Index face = Mesh::null_index;
+  for(Index f : m.edge_ring_faces(chord))
+    for(Index u : m.face_vertices(f)) if(u == v) face = f;
+  ASSERT_NE(face, Mesh::null_index);
+  const int original = matchings.face_matching[face];
+  for(int g = 0; g < 24; ++g) {
+    matchings.face_matching[face] = g;
+    if(HR::internal::edge_holonomy(m, matchings.face_matching, chord) == 0) break;
+  }
+  ASSERT_NE(matchings.face_matching[face], original);
+  const auto zigzag = evaluate_matchings(m, frames, matchings);
+  ASSERT_EQ(zigzag.singular.size(), 5u);
+  EXPECT_EQ(zigzag.defects(), 0u); // no jog, no zipper: only the face is wrong
+  std::size_t at_v = 0;
+  for(const auto& e : zigzag.singular) {
+    const bool side = (e.vertices[0] == v) != (e.vertices[1] == v);
+    if(!side) continue;
+    ++at_v;
+    const std::size_t other = e.vertices[0] == v ? e.vertices[1] : e.vertices[0];
+    EXPECT_TRUE(other == a || other == c);
+    EXPECT_EQ(e.kind, straight.singular[0].kind);
+  }
+  ASSERT_EQ(at_v, 2u);
+  const HR::Local_meshability_report check = HR::check_local_meshability(m, frames, matchings);
+  ASSERT_EQ(check.count(HR::Meshability_reason::ZIGZAG_FACE), 1u);
+  EXPECT_EQ(check.count(HR::Meshability_reason::JOG), 0u);
+  EXPECT_EQ(check.graph_defects(), 1u);
+  for(const auto& x : check.violations)
+    if(x.reason == HR::Meshability_reason::ZIGZAG_FACE) {
+      EXPECT_EQ(x.index, v);
+      EXPECT_LT((x.position - Eigen::Vector3d(0.5, 0.5, 3)).norm(), 1e-12);
+    }
+  EXPECT_STREQ(HR::meshability_reason_name(HR::Meshability_reason::ZIGZAG_FACE), "zigzag_face");
+
+  const auto r = HR::repair_singularity_graph(m, frames, matchings);
+  EXPECT_EQ(r.defects_before[std::size_t(HR::Meshability_reason::ZIGZAG_FACE)], 1u);
+  EXPECT_EQ(r.defects_after[std::size_t(HR::Meshability_reason::ZIGZAG_FACE)], 0u);
+  const auto repaired = evaluate_matchings(m, frames, matchings);
+  EXPECT_EQ(repaired.defects(), 0u);
+  ASSERT_EQ(repaired.singular.size(), 4u);
+  for(const auto& e : repaired.singular) {
+    EXPECT_TRUE(on_axis(points[e.vertices[0]]) && on_axis(points[e.vertices[1]]));
+    EXPECT_EQ(e.kind, straight.singular[0].kind);
+  }
 }
 
 // A closed singular loop inside kuhn_box, in the plane x = y: the triangle (0,0,2), (0,0,6), (2,2,6), whose

@@ -55,22 +55,27 @@ enum class Meshability_reason {
   /// sharing that coordinate, so the whole curve lies in the patch's plane and every tetrahedron
   /// between them is flat in every map. A curve ends on faces it crosses (a curve ending on a feature
   /// curve next to a patch parallel to it, or bending into the boundary with a jog).
-  END_IN_BOUNDARY_PLANE
+  END_IN_BOUNDARY_PLANE,
+  /// An interior face a-v-c whose edges v-a and v-c are two consecutive edges of one singular curve
+  /// (valence 3 or 5 both) and whose third edge a-c is the chord of the bend: the map puts a, v and c on
+  /// the curve's parameter line, so the face is degenerate and both tetrahedra on it are flat in every
+  /// map. The singular edges may be within 45 degrees of their axis (not jogs); reported at v.
+  ZIGZAG_FACE
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Number of values of `Meshability_reason`.
-constexpr std::size_t number_of_meshability_reasons = 9;
+constexpr std::size_t number_of_meshability_reasons = 10;
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// The name of a reason in reports (`"improper_edge"`, `"jog"`, `"dangling_end"`, `"zipper"`,
 /// `"invalid_node"`, `"boundary_contact"`, `"feature_sector"`, `"disagreeing_face"`,
-/// `"end_in_boundary_plane"`).
+/// `"end_in_boundary_plane"`, `"zigzag_face"`).
 inline const char* meshability_reason_name(Meshability_reason reason)
 {
   static const char* names[number_of_meshability_reasons] = {"improper_edge", "jog", "dangling_end", "zipper",
                                                               "invalid_node", "boundary_contact", "feature_sector",
-                                                              "disagreeing_face", "end_in_boundary_plane"};
+                                                              "disagreeing_face", "end_in_boundary_plane", "zigzag_face"};
   return names[std::size_t(reason)];
 }
 
@@ -81,7 +86,7 @@ struct Meshability_violation
   /// Why.
   Meshability_reason reason = Meshability_reason::IMPROPER_EDGE;
   /// Index of the edge (improper edge, jog, feature sector), vertex (dangling end, zipper, node,
-  /// boundary contact) or face (disagreeing face) in the tetrahedral mesh.
+  /// boundary contact, the bend of a zigzag face) or face (disagreeing face) in the tetrahedral mesh.
   std::uint32_t index = 0;
   /// Position in model units: the vertex, or the midpoint of the edge, or the centroid of the face.
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -96,7 +101,7 @@ inline std::size_t graph_defect_count(const std::array<std::size_t, number_of_me
   return c[std::size_t(Meshability_reason::IMPROPER_EDGE)] + c[std::size_t(Meshability_reason::JOG)] +
          c[std::size_t(Meshability_reason::DANGLING_END)] + c[std::size_t(Meshability_reason::ZIPPER)] +
          c[std::size_t(Meshability_reason::INVALID_NODE)] + c[std::size_t(Meshability_reason::BOUNDARY_CONTACT)] +
-         c[std::size_t(Meshability_reason::END_IN_BOUNDARY_PLANE)];
+         c[std::size_t(Meshability_reason::END_IN_BOUNDARY_PLANE)] + c[std::size_t(Meshability_reason::ZIGZAG_FACE)];
 }
 
 } // namespace internal
@@ -201,6 +206,8 @@ Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mes
       add(Meshability_reason::INVALID_NODE, v, point(v));
     else if(ends_in_boundary_plane(mesh, frames, r.edge_class, holonomy, v))
       add(Meshability_reason::END_IN_BOUNDARY_PLANE, v, point(v));
+    else if(s.kind == Vertex_singularity::NONE && zigzag_face(mesh, r.edge_class, v) != Tetrahedral_mesh_3<Traits>::null_index)
+      add(Meshability_reason::ZIGZAG_FACE, v, point(v));
   }
   for(Index f = 0; faces && f < mesh.number_of_faces(); ++f) {
     if(mesh.is_boundary_face(f)) continue;
@@ -219,7 +226,8 @@ Local_meshability_report local_meshability(const Tetrahedral_mesh_3<Traits>& mes
 /// holonomy (the product of the kept matchings around it) is the identity or a quarter turn about an
 /// axis within 45 degrees of the edge; no singular curve ends inside the volume, turns from valence 3
 /// into valence 5, touches the boundary without ending there, or ends on a boundary triangle that runs
-/// alongside it (`Meshability_reason::END_IN_BOUNDARY_PLANE`); nodes pass the link condition of
+/// alongside it (`Meshability_reason::END_IN_BOUNDARY_PLANE`), or bends back across one face
+/// (`Meshability_reason::ZIGZAG_FACE`); nodes pass the link condition of
 /// `Meshability_reason::INVALID_NODE`; boundary edges get their prescribed valence; frames agree
 /// with the kept matchings. The check reads the matchings, not `compute_singularity_graph()`'s
 /// flags (which tolerate edges up to 75.5 degrees off their axis).

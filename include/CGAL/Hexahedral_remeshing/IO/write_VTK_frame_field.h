@@ -130,7 +130,8 @@ void write_VTK_singularity_graph(const std::string& filename, const Tetrahedral_
 /// VTK line cell per singular edge (every edge of `graph.curves`), so that the reason can be read
 /// per edge. Points: the vertices of those edges and the vertices where the check fails, point
 /// arrays `vertex` (index in `mesh`) and `reason` (the `Meshability_reason` of a failing vertex:
-/// 2 dangling end, 3 zipper, 4 invalid node, 5 boundary contact, 8 end in a boundary plane; -1 none).
+/// 2 dangling end, 3 zipper, 4 invalid node, 5 boundary contact, 8 end in a boundary plane, 9 the bend of
+/// a zigzag face; -1 none).
 /// Cell arrays: `valence` (3, 5, 0 improper), `curve` (index in `graph.curves`), `reason` (0 improper
 /// edge, 1 jog, -1 none).
 /// \param filename the output file (written atomically)

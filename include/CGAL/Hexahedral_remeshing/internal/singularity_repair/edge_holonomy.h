@@ -141,6 +141,41 @@ Vertex_singularity vertex_singularity(const Mesh& mesh, const std::vector<signed
   return s;
 }
 
+// The face spanned by edges e1 and e2 of one vertex (null_index if the third edge is not in the mesh
+// or spans no face).
+template <class Mesh>
+typename Mesh::Index face_of_edges(const Mesh& mesh, typename Mesh::Index e1, typename Mesh::Index e2)
+{
+  const auto& a = mesh.edge_vertices(e1);
+  const auto& b = mesh.edge_vertices(e2);
+  for(auto f : mesh.edge_ring_faces(e1)) {
+    const auto& fv = mesh.face_vertices(f);
+    auto in_face = [&](typename Mesh::Index v) { return fv[0] == v || fv[1] == v || fv[2] == v; };
+    if(in_face(b[0]) && in_face(b[1]) && in_face(a[0]) && in_face(a[1])) return f;
+  }
+  return Mesh::null_index;
+}
+
+// The face of a zigzag at interior vertex v (null_index if none): v on one curve (exactly two singular
+// edges, both valence 3 or both valence 5) whose two edges v-a and v-c bound a face a-v-c. The map puts
+// a, v and c on the curve's parameter line (both edges are tagged as lines along the same axis), so the
+// triangle is degenerate and both tetrahedra on it are flat in every map, whatever the angle at v.
+template <class Mesh>
+typename Mesh::Index zigzag_face(const Mesh& mesh, const std::vector<signed char>& edge_class, typename Mesh::Index v)
+{
+  if(mesh.is_boundary_vertex(v)) return Mesh::null_index;
+  typename Mesh::Index edges[2];
+  int degree = 0;
+  for(auto e : mesh.vertex_edges(v)) {
+    if(!is_singular_class(edge_class[e])) continue;
+    if(degree == 2) return Mesh::null_index;
+    edges[degree++] = e;
+  }
+  if(degree != 2 || edge_class[edges[0]] != edge_class[edges[1]] || (edge_class[edges[0]] != 3 && edge_class[edges[0]] != 5))
+    return Mesh::null_index;
+  return face_of_edges(mesh, edges[0], edges[1]);
+}
+
 // Whether a singular curve ends at (or touches) boundary vertex v along a boundary triangle it runs
 // alongside: the map puts the three corners of every boundary triangle on an integer plane across the
 // frame axis closest to its normal (integer_tags.h) and every quarter-turn edge on an integer line along

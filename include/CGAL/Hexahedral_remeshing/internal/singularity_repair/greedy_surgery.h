@@ -30,7 +30,7 @@ template <class Mesh>
 bool is_vertex_defect(const Singularity_repair_state<Mesh>& state, typename Mesh::Index v)
 {
   return vertex_singularity(state.mesh(), state.edge_classes(), v).kind != Vertex_singularity::NONE || state.is_invalid_boundary_corner(v) ||
-         state.ends_in_boundary_plane(v);
+         state.ends_in_boundary_plane(v) || state.is_zigzag(v);
 }
 
 // Queues the defects of the edges and vertices of face f and of the edges at its vertices.

@@ -30,24 +30,10 @@ public:
       const auto edges = singular_edges_at(state, v);
       for(std::size_t i = 0; i < edges.size(); ++i)
         for(std::size_t j = i + 1; j < edges.size(); ++j) {
-          const auto f = common_face(mesh, edges[i], edges[j]);
+          const auto f = face_of_edges(mesh, edges[i], edges[j]);
           if(f != Mesh::null_index && state.is_editable(f)) all_other_matchings(std::uint32_t(f), state.matching(f), out);
         }
     }
-  }
-
-private:
-  // The face bounded by edges e1 and e2 (null_index if they span no face of the mesh).
-  static typename Mesh::Index common_face(const Mesh& mesh, typename Mesh::Index e1, typename Mesh::Index e2)
-  {
-    const auto& a = mesh.edge_vertices(e1);
-    const auto& b = mesh.edge_vertices(e2);
-    for(auto f : mesh.edge_ring_faces(e1)) {
-      const auto& fv = mesh.face_vertices(f);
-      auto in_face = [&](typename Mesh::Index v) { return fv[0] == v || fv[1] == v || fv[2] == v; };
-      if(in_face(b[0]) && in_face(b[1]) && in_face(a[0]) && in_face(a[1])) return f;
-    }
-    return Mesh::null_index;
   }
 };
 

@@ -132,14 +132,18 @@ public:
   }
   // A vertex where the curve turns from one lean to the other costs as a zipper: the map reports it
   // as one (see edge_lean()); an invalid boundary corner as an invalid node; a curve ending in a
-  // boundary plane as a boundary contact.
+  // boundary plane or a zigzag as a boundary contact.
   double vertex_cost(Index v) const
   {
     const double c = vertex_cost(vertex_singularity(m_mesh, m_class, v));
     if(c != 0) return c;
     if(is_leaning_zipper(m_mesh, m_class, m_lean, v) || is_invalid_boundary_corner(v)) return 10;
-    return ends_in_boundary_plane(v) ? 5 : 0;
+    return ends_in_boundary_plane(v) || is_zigzag(v) ? 5 : 0;
   }
+
+  // An interior curve vertex whose two singular edges bound a face (zigzag_face()): that face is flat in
+  // every map.
+  bool is_zigzag(Index v) const { return zigzag_face(m_mesh, m_class, v) != Mesh::null_index; }
 
   // The change of the cost if face f had matching g (infinite if a boundary edge's valence changes).
   double evaluate(Index f, int g)
