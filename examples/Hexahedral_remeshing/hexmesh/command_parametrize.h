@@ -110,6 +110,9 @@ inline std::string complex_summary(const CGAL::Hexahedral_remeshing::Integer_gri
     os << c.programs << " program(s) of " << c.program_variables << " variables and " << c.program_constraints
        << " constraints, folds " << c.folds_after_rounding << " -> " << c.folds_after_program << " (" << c.reason << ", "
        << c.program_seconds << " s)";
+  if(c.reembedded)
+    os << "; once repaired, folds " << c.folds_after_repair_quantized << " (quantized map) and " << c.folds_after_repair_program
+       << " (the program's lengths re-embedded)";
   return os.str();
 }
 
@@ -182,6 +185,9 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("skipped_extents", m.motorcycle_complex.skipped_extents)
       .value("folds_after_rounding", m.motorcycle_complex.folds_after_rounding)
       .value("folds_after_program", m.motorcycle_complex.folds_after_program)
+      .value("reembedded", m.motorcycle_complex.reembedded)
+      .value("folds_after_repair_quantized", m.motorcycle_complex.folds_after_repair_quantized)
+      .value("folds_after_repair_program", m.motorcycle_complex.folds_after_repair_program)
       .value("program_variables", m.motorcycle_complex.program_variables)
       .value("program_constraints", m.motorcycle_complex.program_constraints)
       .value("programs", m.motorcycle_complex.programs)
@@ -241,6 +247,8 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
             ? "separation program: " + std::to_string(m.folds_after_rounding) + " folded tetrahedra after the rounding, " +
                 std::to_string(m.folds_after_separation) + " after " + std::to_string(m.separation_rounds) + " program(s) with " +
                 std::to_string(m.separation_constraints) + " separation constraint(s)"
+            : m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX && m.motorcycle_complex.reembedded
+                ? "the motorcycle complex's program, re-embedded (" + m.quantization_reason + ")"
             : m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX
                 ? "the motorcycle complex's program: " + std::to_string(m.motorcycle_complex.folds_after_rounding) +
                     " folded tetrahedra after the rounding, 0 after " + std::to_string(m.motorcycle_complex.programs) + " program(s)"

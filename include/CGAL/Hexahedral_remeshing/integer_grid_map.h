@@ -189,8 +189,17 @@ struct Integer_grid_map_complex
   std::size_t skipped_extents = 0;
   /// Folded tetrahedra of the rounded map.
   std::size_t folds_after_rounding = 0;
-  /// Folded tetrahedra of the last program's map.
+  /// Folded tetrahedra of the last program's map (its linear map, before any untangling).
   std::size_t folds_after_program = 0;
+  /// True if the last program's lengths were re-embedded: the quantized map still folded after its
+  /// repair (stiffening, untangling) and the program had given other lengths, which were held and
+  /// repaired the same way; the map with fewer folds is kept (`quantization` says which).
+  bool reembedded = false;
+  /// Folded tetrahedra (the structurally flat ones left out) of the quantized map after its repair,
+  /// and of the program's re-embedded map after its repair (equal if not re-embedded).
+  std::size_t folds_after_repair_quantized = 0;
+  /// See `folds_after_repair_quantized`.
+  std::size_t folds_after_repair_program = 0;
   /// Integer variables of the last program.
   std::size_t program_variables = 0;
   /// Constraints of the last program.

@@ -17,6 +17,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_quantization.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/program_reembedding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/reduced_system.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
@@ -134,6 +135,9 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
     r.untangling_ran = r.untangling_ran || fr.untangling_ran;
     r.stiffening_seconds = fr.stiffening_seconds;
     r.untangling_seconds = fr.untangling_seconds;
+    const Program_reembedding pr = reembed_program_lengths(mesh, in, H, rhs, q.alternative, o.untangle, o.maximum_stiffening,
+                                                           o.untangling_rings, solver, visitor, y);
+    report_program_reembedding(pr, r);
   }
 
   stage.start("sanitizing");

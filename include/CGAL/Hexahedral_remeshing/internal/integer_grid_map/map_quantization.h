@@ -7,6 +7,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/complex_quantizer.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/program_reembedding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/separating_quantizer.h>
 
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -121,6 +123,7 @@ Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex
   if(o.quantization != Path::SEPARATION_PROGRAM &&
      quantize_on_complex(finder, trace, H, rhs, integer_column, seamless, seamless_folds, o, solver, y, r, q))
     return q;
+  const std::vector<std::pair<Eigen::Index, double> > alternative = q.alternative; // the complex's program
   Separating_quantizer separating(
     [&](const Eigen::VectorXd& reference, const Eigen::VectorXd& v) { return finder.violated(reference, v); },
     [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
@@ -128,6 +131,7 @@ Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex
   separating.seamless = seamless;
   separating.seamless_folds = seamless_folds;
   q = separating.quantize(H, rhs, integer_column, solver, y);
+  q.alternative = alternative;
   const Separation_report& sr = separating.report;
   r.quantization = sr.used ? Path::SEPARATION_PROGRAM : Path::GREEDY_ROUNDING;
   r.quantization_reason = sr.reason;
@@ -138,6 +142,27 @@ Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex
   r.separation_variables = sr.variables;
   r.separation_seconds = sr.program_seconds;
   return q;
+}
+
+// The re-embedding of the complex's lengths in the report (`Result`: Integer_grid_map_result).
+template <class Result>
+void report_program_reembedding(const Program_reembedding& pr, Result& r)
+{
+  typedef decltype(r.quantization) Path;
+  auto& c = r.motorcycle_complex;
+  c.reembedded = pr.ran;
+  c.folds_after_repair_quantized = pr.folds_quantized;
+  c.folds_after_repair_program = pr.folds_program;
+  if(!pr.ran) return;
+  r.untangling_ran = r.untangling_ran || pr.repair.untangling_ran;
+  r.stiffening_seconds += pr.repair.stiffening_seconds;
+  r.untangling_seconds += pr.repair.untangling_seconds;
+  if(!pr.kept) return;
+  const std::string replaced = r.quantization == Path::SEPARATION_PROGRAM ? "the separation program's" : "the rounded";
+  r.quantization = Path::MOTORCYCLE_COMPLEX;
+  r.stiffening_rounds = pr.repair.stiffening_rounds;
+  r.quantization_reason = "the complex's lengths, re-embedded by the untangling: " + std::to_string(pr.folds_program) +
+                          " folded tetrahedra against " + std::to_string(pr.folds_quantized) + " for " + replaced + " map once repaired";
 }
 
 // The status of the map, the most serious first (`Result`: Integer_grid_map_result).

@@ -8,6 +8,7 @@
 
 #include <Eigen/Sparse>
 
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -25,6 +26,9 @@ struct Quantization_result
   int rounds = 0;        // solves of the rounding loop
   double max_rounding = 0; // largest |y_i - round(y_i)| of a variable when it was rounded
   Eigen::VectorXd relaxed;  // the solution of the continuous relaxation (first solve)
+  // Integer values (column, value) of a quantization that was not kept because its linear map folded
+  // more (the motorcycle complex's program): re-embedded if the kept map still folds once repaired.
+  std::vector<std::pair<Eigen::Index, double> > alternative;
 };
 
 class Quantizer

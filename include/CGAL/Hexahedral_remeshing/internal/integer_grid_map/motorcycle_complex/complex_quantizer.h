@@ -55,7 +55,8 @@ struct Complex_quantization_report
 // one direction whose extents are all zero and that joins two critical sides (zero_length_paths())
 // gets sum >= 1, and the zero extents of the blocks with folded tetrahedra are kept apart too (up to
 // `maximum_rounds` programs). The program's map is kept only if it does not fold; else the rounded one
-// (the caller then tries the separation around the folds).
+// (the caller then tries the separation around the folds), the program's values offered as the
+// alternative (Quantization_result), which the untangling may re-embed better than the rounded ones.
 class Complex_quantizer : public Quantizer
 {
 public:
@@ -101,6 +102,8 @@ public:
     report.variables = variables.size();
     solve_programs(extents, variables, solver, y);
     if(!report.used) {
+      // the last program's lengths stay on offer: the untangling may re-embed them where the rounded ones fail
+      q.alternative = m_program;
       for(const Integer_program_variable& v : variables) solver.fix(v.column, rounded[v.column]);
       y = rounded;
       report.reason += " (the rounded map kept)";
@@ -122,7 +125,11 @@ private:
       if(p.status == Integer_program_result::INFEASIBLE) { report.reason = "the complex's program is infeasible"; return; }
       if(p.status == Integer_program_result::FAILED) { report.reason = "the complex's program failed or timed out"; return; }
       report.objective = p.objective;
-      for(std::size_t i = 0; i < variables.size(); ++i) solver.fix(variables[i].column, p.values[i]);
+      m_program.clear();
+      for(std::size_t i = 0; i < variables.size(); ++i) {
+        solver.fix(variables[i].column, p.values[i]);
+        m_program.emplace_back(variables[i].column, p.values[i]);
+      }
       if(!solver.solve(y)) { report.reason = "factorization failed"; return; }
       const std::vector<char> folded = m_folded(y);
       report.folds = std::size_t(std::count(folded.begin(), folded.end(), char(1)));
@@ -206,6 +213,7 @@ private:
   Trace m_trace;
   Block_extents m_extents;
   std::set<Linear_form> m_paths;
+  std::vector<std::pair<Eigen::Index, double> > m_program; // the integer values of the last program
   Eigen::VectorXd m_seamless;
   Folded m_folded;
 };
