@@ -128,6 +128,18 @@ std::vector<Eigen::Matrix3d> axis_field(const Mesh& m)
 
 bool on_axis(const Eigen::Vector3d& p) { return std::abs(p.x()) < 1e-9 && std::abs(p.y()) < 1e-9; }
 
+// Gives face f the first matching that makes the holonomy of edge e the identity: the singular edge e
+// moves across the triangle f onto its other two edges. Returns f's matching before.
+int move_singular_edge_across(const Mesh& m, HR::Matchings& matchings, Index f, Index e)
+{
+  const int original = matchings.face_matching[f];
+  for(int g = 0; g < 24; ++g) {
+    matchings.face_matching[f] = g;
+    if(HR::internal::edge_holonomy(m, matchings.face_matching, e) == 0) break;
+  }
+  return original;
+}
+
 } // namespace
 
 TEST(Meshability, StraightAxisIsMeshableAndKeptBitwise)
@@ -176,11 +188,7 @@ TEST(Meshability, ZigzagRepairedToTheStraightAxis)
     if(points[c].z() == 2 && !m.is_boundary_vertex(c)) { zigzag_face = f; break; }
   }
   ASSERT_NE(zigzag_face, Mesh::null_index);
-  const int original = matchings.face_matching[zigzag_face];
-  for(int g = 0; g < 24; ++g) {
-    matchings.face_matching[zigzag_face] = g;
-    if(HR::internal::edge_holonomy(m, matchings.face_matching, e) == 0) break;
-  }
+  const int original = move_singular_edge_across(m, matchings, zigzag_face, e);
   ASSERT_NE(matchings.face_matching[zigzag_face], original);
   const auto zigzag = evaluate_matchings(m, frames, matchings);
   EXPECT_EQ(zigzag.singular.size(), 5u);
@@ -235,11 +243,7 @@ TEST(Meshability, ZigzagFaceReportedAndStraightened)
   for(Index f : m.edge_ring_faces(chord))
     for(Index u : m.face_vertices(f)) if(u == v) face = f;
   ASSERT_NE(face, Mesh::null_index);
-  const int original = matchings.face_matching[face];
-  for(int g = 0; g < 24; ++g) {
-    matchings.face_matching[face] = g;
-    if(HR::internal::edge_holonomy(m, matchings.face_matching, chord) == 0) break;
-  }
+  const int original = move_singular_edge_across(m, matchings, face, chord);
   ASSERT_NE(matchings.face_matching[face], original);
   const auto zigzag = evaluate_matchings(m, frames, matchings);
   ASSERT_EQ(zigzag.singular.size(), 5u);
