@@ -11,7 +11,10 @@ Reads the vertices and, per tetrahedron, the parameters of its 4 corners in its 
   - boundary faces: the 3 corners share one integer coordinate;
   - edge valences: (sum of the parameter-space dihedral angles of the tets around an edge) / (pi/2),
     as a histogram for boundary and interior edges, and for the edges lying on given segments
-    (--edge-valence: every mesh edge with both ends on the segment must have valence K).
+    (--edge-valence: every mesh edge with both ends on the segment must have valence K);
+  - branched edges: interior edges whose tetrahedra are all positive but whose valence is 1 or less
+    (the map is not locally injective there although no tetrahedron is inverted), and, reported only,
+    the interior edges of valence other than 3, 4 or 5 (unusual_interior_edges).
 --expect-valid makes the exit status 1 unless every check above passes (flat tetrahedra, where a
 singular curve's jog collapses, are counted but tolerated, as by the extraction). Writes a JSON summary.
 Needs python3 with numpy (Debian python3-numpy). Written for the tests, apart from the package code.
@@ -161,6 +164,12 @@ def main():
         for i, j in ((0, 1), (1, 2), (0, 2)):
             bkeys.add(int(f[i]) * n + int(f[j]))
     is_boundary_edge = np.array([int(k) in bkeys for k in uniq])
+    # edges whose tetrahedra are all positive: their angle sum is the map's turn around them
+    not_positive = np.repeat((par * space <= 0)[:, None], 6, axis=1).reshape(-1)
+    clean = np.bincount(inv, weights=not_positive.astype(float)) == 0
+    rounded = np.round(valence)
+    unusual = ~is_boundary_edge & clean & ((rounded < 3) | (rounded > 5))
+    branched = ~is_boundary_edge & clean & (rounded <= 1)
 
     def histogram(vals):
         h = {}
@@ -195,10 +204,13 @@ def main():
         'boundary_faces': int(len(boundary_idx)), 'boundary_faces_off_plane': off_plane,
         'boundary_edge_valences': histogram(valence[is_boundary_edge]),
         'interior_edge_valences': histogram(valence[~is_boundary_edge]),
+        'unusual_interior_edges': int(np.sum(unusual)), 'branched_edges': int(np.sum(branched)),
         'segments': segments,
     }
     # flat tetrahedra are tolerated (collapsed jogs of singular curves; the extraction skips them)
-    valid = (inverted == 0 and bad_transitions == 0 and triple == 0 and off_plane == 0 and
+    # an interior edge with every tetrahedron positive and at most a quarter turn around it is never
+    # meshable (no hexahedra surround an edge with one quarter turn): the map is branched there
+    valid = (inverted == 0 and bad_transitions == 0 and triple == 0 and off_plane == 0 and report['branched_edges'] == 0 and
              all(s['wrong'] == 0 and s['edges'] > 0 for s in segments))
     report['valid'] = valid
     text = json.dumps(report, indent=1)

@@ -9,6 +9,7 @@
 #include "hex_mesh_generators.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -199,6 +200,51 @@ TEST(MapCheck, TwoCubesAreAnIntegerGridMap)
   // boundary: the 20 box edges of angle pi/2 (12 cube-box edges, split: the 4 long ones are 2 edges each)
   EXPECT_EQ(c.boundary_edge_valences.at(1), 4u * 2 + 4u + 4u);
   EXPECT_EQ(c.boundary_edge_valences.count(3), 0u);
+}
+
+// A ring of n tetrahedra (a, b, p_k, p_k+1) around the edge a = (0,0,0), b = (0,0,1), the p_k evenly spaced
+// on a circle in space, at k * step degrees about the edge in parameter space (p_n = p_0 in space; its
+// parameters in the last tetrahedron are turned by n * step, a rotation of the cube group about the
+// edge). Every tetrahedron is positive in both; the parameter angles around the edge sum to n * step.
+static HR::Integer_grid_map ring_map(int n, double step)
+{
+  HR::Integer_grid_map map;
+  const double pi = 3.14159265358979323846;
+  map.points = {{0, 0, 0}, {0, 0, 1}};
+  for(int k = 0; k < n; ++k) map.points.emplace_back(std::cos(2 * pi * k / n), std::sin(2 * pi * k / n), 0.5);
+  auto param = [&](int k) { return Eigen::Vector3d(std::cos(k * step * pi / 180), std::sin(k * step * pi / 180), 0.5); };
+  for(int k = 0; k < n; ++k) {
+    map.tetrahedra.push_back({0, 1, std::uint32_t(2 + k), std::uint32_t(2 + (k + 1) % n)});
+    map.parameters.push_back({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 1), param(k), param(k + 1)});
+  }
+  return map;
+}
+
+// The map check lists the interior edges whose tetrahedra are all positive but whose valence is not 3, 4
+// or 5 (a branched map: the flange of make_parts.py gave one, a valence-5 curve at valence 1 beside a
+// regular edge at valence 8, after the untangling); check_hexex.py counts those of valence 1 or less.
+TEST(MapCheck, BranchedEdgesAreListed)
+{
+  for(int n : {4, 5, 8}) {
+    // 8 tetrahedra a quarter turn each: the map goes twice around (identity transitions); 4 tetrahedra
+    // of 22.5 degrees: once a quarter turn (the last face's transition a quarter turn about the edge);
+    // 5 of 90 degrees: a regular valence-5 edge, not listed
+    const double step = n == 4 ? 22.5 : 90.;
+    const HR::Integer_grid_map map = ring_map(n, step);
+    const HR::Integer_grid_map_check c = HR::check_integer_grid_map(map);
+    EXPECT_EQ(c.inverted_tetrahedra + c.degenerate_tetrahedra, 0u) << n;
+    EXPECT_EQ(c.inverted_positions + c.degenerate_positions, 0u) << n;
+    EXPECT_EQ(c.interior_edge_valences.size(), 1u) << n;
+    const int valence = int(std::lround(n * step / 90));
+    EXPECT_EQ(c.interior_edge_valences.count(valence), 1u) << n;
+    if(valence == 5) {
+      EXPECT_TRUE(c.unusual_interior_edges.empty());
+      continue;
+    }
+    ASSERT_EQ(c.unusual_interior_edges.size(), 1u) << n;
+    EXPECT_EQ(c.unusual_interior_edges[0].vertices, (std::array<std::uint32_t, 2>{{0, 1}}));
+    EXPECT_EQ(c.unusual_interior_edges[0].valence, valence);
+  }
 }
 
 TEST(MapCheck, NonIntegerJumpIsMeasured)

@@ -126,6 +126,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("target_edge_length", m.target_edge_length)
       .value("inverted_tetrahedra", m.inverted_tetrahedra)
       .value("degenerate_tetrahedra", m.degenerate_tetrahedra)
+      .value("branched_edges", m.branched_edges)
       .value("min_relative_jacobian", m.min_relative_jacobian)
       .value("cut_faces", m.cut_faces)
       .value("variables", m.variables)
@@ -227,7 +228,9 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
                                    const CGAL::Hexahedral_remeshing::Boundary_valence_agreement& a)
 {
   out << "  integer-grid map    " << CGAL::Hexahedral_remeshing::status_name(m.status) << ": hex edge " << m.target_edge_length
-      << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, min det J "
+      << ", " << m.inverted_tetrahedra << " inverted and " << m.degenerate_tetrahedra << " degenerate tetrahedra, "
+      << (m.branched_edges ? std::to_string(m.branched_edges) + " branched interior edges (angle sums not 3, 4 or 5 quarter turns), " : std::string())
+      << "min det J "
       << std::setprecision(3) << m.min_relative_jacobian << std::defaultfloat << " of the target; " << m.integer_variables
       << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
       << "  seamless map        "
@@ -360,7 +363,8 @@ inline int command_parametrize(const Arguments& args)
   }
   const std::string what = std::string("integer-grid map status ") + HR::status_name(m.status) + " (" +
                            std::to_string(m.inverted_tetrahedra) + " inverted, " + std::to_string(m.degenerate_tetrahedra) +
-                           " flat tetrahedra, " + std::to_string(m.defects.size()) + " non-meshable singularities)";
+                           " flat tetrahedra, " + (m.branched_edges ? std::to_string(m.branched_edges) + " branched edges, " : std::string()) +
+                           std::to_string(m.defects.size()) + " non-meshable singularities)";
   if(!usable)
     throw Stage_error(in + ": " + what + (write_map ? " (map written: --keep-partial)" : " (no map written)"));
   if(m.status != HR::Integer_grid_map_status::OK)

@@ -99,6 +99,20 @@ struct Integer_grid_map_check
   /// Every boundary edge with its valence, sorted by vertex ids: compare with the prescribed valences
   /// (`boundary_valence_agreement()`).
   std::vector<Boundary_edge> boundary_edges;
+  /// One interior edge of the map with its valence.
+  struct Interior_edge
+  {
+    std::array<std::uint32_t, 2> vertices; ///< vertex ids, ascending
+    int valence;                           ///< angle sum / (pi/2), rounded
+  };
+  /// Interior edges whose tetrahedra are all positively oriented but whose valence is not 3, 4 or 5,
+  /// sorted by vertex ids: the map turns around them by another number of quarter turns. Where the
+  /// field has singular edges of valence 3 and 5 only (as `compute_integer_grid_map()`'s), such an
+  /// edge is a branch of the map (`Integer_grid_map_status::BRANCHED_EDGES`): every tetrahedron is
+  /// positive, yet the map is not locally injective (a valence-1 edge of a valence-5 curve beside a
+  /// valence-8 regular one: the curve's winding moved to a neighbour). Other maps may have edges of
+  /// valence 2 or 6 on purpose (HexEx's sphere and hand).
+  std::vector<Interior_edge> unusual_interior_edges;
 
   /// True when the transitions and the boundary planes are integer within `tolerance`.
   bool is_integer_grid(double tolerance = 1e-3) const
@@ -148,7 +162,7 @@ inline Integer_grid_map_check check_integer_grid_map(const Integer_grid_map& map
     check.worst_jump_face = ex::sorted_face(map, tr.worst_jump_tet, tr.worst_jump_face);
 
   std::vector<double> angle_sum(topo.edges.size(), 0.);
-  std::vector<char> at_degenerate(topo.edges.size(), 0);
+  std::vector<char> at_degenerate(topo.edges.size(), 0), at_inverted(topo.edges.size(), 0);
   for(std::uint32_t t = 0; t < nt; ++t) {
     const CGAL::Orientation o = ex::parameter_orientation(map.parameters[t]);
     if(o == CGAL::NEGATIVE) ++check.inverted_tetrahedra;
@@ -160,6 +174,7 @@ inline Integer_grid_map_check check_integer_grid_map(const Integer_grid_map& map
     for(int e = 0; e < 6; ++e) {
       const std::uint32_t id = topo.tetrahedron_edges[t][e];
       if(o == CGAL::COPLANAR) { at_degenerate[id] = 1; continue; }
+      if(o == CGAL::NEGATIVE) at_inverted[id] = 1;
       const double a = ex::parameter_dihedral_angle(map.parameters[t], e);
       angle_sum[id] += o == CGAL::NEGATIVE ? -a : a;
     }
@@ -185,8 +200,12 @@ inline Integer_grid_map_check check_integer_grid_map(const Integer_grid_map& map
       check.boundary_edges.push_back({topo.edges[e], valence, at_degenerate[e] != 0});
     } else {
       ++check.interior_edge_valences[valence];
+      if(!at_degenerate[e] && !at_inverted[e] && (valence < 3 || valence > 5))
+        check.unusual_interior_edges.push_back({topo.edges[e], valence});
     }
   }
+  std::sort(check.unusual_interior_edges.begin(), check.unusual_interior_edges.end(),
+            [](const auto& a, const auto& b) { return a.vertices < b.vertices; });
   std::sort(check.boundary_edges.begin(), check.boundary_edges.end(),
             [](const auto& a, const auto& b) { return a.vertices < b.vertices; });
   return check;

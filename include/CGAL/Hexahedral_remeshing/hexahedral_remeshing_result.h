@@ -94,6 +94,7 @@ inline const char* status_name(Integer_grid_map_status s)
     case S::NON_MESHABLE_SINGULARITIES: return "NON_MESHABLE_SINGULARITIES";
     case S::INCONSISTENT_MATCHINGS: return "INCONSISTENT_MATCHINGS";
     case S::SOLVER_FAILURE: return "SOLVER_FAILURE";
+    case S::BRANCHED_EDGES: return "BRANCHED_EDGES";
   }
   return "UNKNOWN";
 }

@@ -8,6 +8,7 @@
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
 #include <CGAL/Hexahedral_remeshing/exceptions.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
+#include <CGAL/Hexahedral_remeshing/hexahedral_extraction.h>
 #include <CGAL/Hexahedral_remeshing/parameters.h>
 #include <CGAL/Hexahedral_remeshing/singularity_graph.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/integer_grid_map_impl.h>
@@ -131,7 +132,12 @@ enum class Integer_grid_map_status {
   /// The matchings contradict the cut or the constraints (sign contradictions, inconsistent rows).
   INCONSISTENT_MATCHINGS,
   /// The sparse factorization failed.
-  SOLVER_FAILURE
+  SOLVER_FAILURE,
+  /// Every tetrahedron is positively oriented, but around some interior edges the parameter angles
+  /// do not sum to 3, 4 or 5 quarter turns (`Integer_grid_map_result::branched_edges`): the map is
+  /// not locally injective there (the untangling can leave a valence-5 curve at valence 1 beside a
+  /// regular edge at valence 8), and no hexahedra can follow it.
+  BRANCHED_EDGES
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -224,6 +230,11 @@ struct Integer_grid_map_result
   std::size_t inverted_tetrahedra = 0;
   /// Tetrahedra whose four parameter points are coplanar (exact).
   std::size_t degenerate_tetrahedra = 0;
+  /// Interior edges away from inverted and flat tetrahedra whose parameter angle sum is not 3, 4 or 5
+  /// quarter turns (`Integer_grid_map_check::unusual_interior_edges` of the map): the field's
+  /// singular edges have valence 3 or 5 and its regular ones 4, so the map is branched there
+  /// (status `BRANCHED_EDGES` unless a worse one applies).
+  std::size_t branched_edges = 0;
   /// Minimum over the tetrahedra of `det J_t / s^3` (1 for a perfect map at the target size).
   double min_relative_jacobian = 0;
   /// Hex edge length used (model units); `s = 1 / target_edge_length`.
@@ -536,6 +547,10 @@ Integer_grid_map_result compute_integer_grid_map(const Tetrahedral_mesh_3<Traits
     internal::relocate_and_compute_map_stages(mesh, frames, matchings, singularities, o, visitor, map, r);
   }
   r.map_tetrahedra = map.tetrahedra.size();
+  // every tetrahedron positive does not make the map locally injective around the edges
+  r.branched_edges = check_integer_grid_map(map).unusual_interior_edges.size();
+  if(r.branched_edges > 0 && (r.status == Integer_grid_map_status::OK || r.status == Integer_grid_map_status::DEGENERATE_TETRAHEDRA))
+    r.status = Integer_grid_map_status::BRANCHED_EDGES;
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return r;
 }

@@ -179,6 +179,10 @@ inline void name_failed_stage(Hexahedral_remeshing_result& r)
                        std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
                        " flat after the repair of the folds" +
                        (r.map.quantization_reason.empty() ? std::string() : "; separation: " + r.map.quantization_reason);
+  } else if(r.map.branched_edges > 0) {
+    r.failed_stage = "rounding";
+    r.failure_reason = "every tetrahedron of the map is positive, but it is branched around " + std::to_string(r.map.branched_edges) +
+                       " interior edges (parameter angle sums other than 3, 4 or 5 quarter turns) after the repair of the folds";
   } else if(r.extraction.incomplete_cells + r.extraction.untraced_corners > 0) {
     r.failed_stage = "extraction";
     r.failure_reason = std::to_string(r.extraction.incomplete_cells) + " cells and " + std::to_string(r.extraction.untraced_corners) +
