@@ -297,8 +297,10 @@ inline int command_parametrize(const Arguments& args)
   progress.finish();
 
   // a map whose tetrahedra fold (or that the solver could not make) is a failed stage: only its JSON report
-  // is written, unless --keep-partial; flat tetrahedra (collapsed jogs) are tolerated by the extraction
-  const bool usable = m.status == HR::Integer_grid_map_status::OK || m.status == HR::Integer_grid_map_status::DEGENERATE_TETRAHEDRA;
+  // is written, unless --keep-partial; flat tetrahedra (collapsed jogs) are tolerated by the extraction, and
+  // so are branched edges where the branch holds no integer point (MAMBO B1_tet: a valid hex mesh)
+  const bool usable = m.status == HR::Integer_grid_map_status::OK || m.status == HR::Integer_grid_map_status::DEGENERATE_TETRAHEDRA ||
+                      m.status == HR::Integer_grid_map_status::BRANCHED_EDGES;
   const bool write_map = usable || args.has("keep-partial");
   progress.start("writing the outputs");
   const std::string hexex = args.value("hexex");
