@@ -136,7 +136,7 @@ enum class Integer_grid_map_status {
   /// Every tetrahedron is positively oriented, but around some interior edges the parameter angles
   /// do not sum to 3, 4 or 5 quarter turns (`Integer_grid_map_result::branched_edges`): the map is
   /// not locally injective there (the untangling can leave a valence-5 curve at valence 1 beside a
-  /// regular edge at valence 8), and no hexahedra can follow it.
+  /// regular edge at valence 8); the hexahedra there are broken unless the branch holds no integer point.
   BRANCHED_EDGES
 };
 
