@@ -116,6 +116,21 @@ inline std::string complex_summary(const CGAL::Hexahedral_remeshing::Integer_gri
   return os.str();
 }
 
+// One line on the map reached from the seamless map without a fold.
+inline std::string continuation_summary(const CGAL::Hexahedral_remeshing::Integer_grid_map_continuation& c)
+{
+  std::ostringstream os;
+  os << "from the seamless map without a fold: ";
+  if(c.reached)
+    os << "integer values reached in " << c.steps << " steps (" << c.halvings << " halved), " << (c.kept ? "kept" : "not kept")
+       << ": folds " << c.folds_before << " -> " << c.folds_after << ", branched edges " << c.branched_before << " -> " << c.branched_after;
+  else
+    os << "stopped at " << c.parameter << " of the way after " << c.steps << " steps (" << c.halvings << " halved); the repaired map kept ("
+       << c.folds_before << " folds, " << c.branched_before << " branched edges)";
+  os << ", " << c.seconds << " s";
+  return os.str();
+}
+
 // The map block of the JSON reports of parametrize and remesh.
 inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::Integer_grid_map_result& m,
                                  const CGAL::Hexahedral_remeshing::Integer_grid_map_check& c,
@@ -161,6 +176,19 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("moved_vertices", m.relocated_vertices)
       .value("jogs_before", m.relocation_jogs_before)
       .value("jogs_after", m.relocation_jogs_after)
+      .end();
+  json.begin("continuation")
+      .value("ran", m.continuation.ran)
+      .value("reached", m.continuation.reached)
+      .value("kept", m.continuation.kept)
+      .value("steps", m.continuation.steps)
+      .value("halvings", m.continuation.halvings)
+      .value("parameter", m.continuation.parameter)
+      .value("folds_before", m.continuation.folds_before)
+      .value("branched_before", m.continuation.branched_before)
+      .value("folds_after", m.continuation.folds_after)
+      .value("branched_after", m.continuation.branched_after)
+      .value("seconds", m.continuation.seconds)
       .end();
   json.begin("quantization")
       .value("path", quantization_name(m.quantization))
@@ -258,6 +286,7 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
                 : "greedy rounding" + (m.quantization_reason.empty() ? std::string() : " (" + m.quantization_reason + ")"))
       << "\n"
       << "  motorcycle complex  " << complex_summary(m.motorcycle_complex) << "\n"
+      << (m.continuation.ran ? "  continuation        " + continuation_summary(m.continuation) + "\n" : std::string())
       << "  map check           " << (c.is_integer_grid() ? "integer-grid" : "NOT integer-grid") << ", interior edges by valence "
       << valence_list(c.interior_edge_valences) << "; boundary edges by valence " << valence_list(c.boundary_edge_valences)
       << "; boundary valences of the map " << a.matched << "/" << a.total << " as prescribed"

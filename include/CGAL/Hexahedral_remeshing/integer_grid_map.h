@@ -40,6 +40,7 @@ enum quantization_time_limit_t { quantization_time_limit };
 enum seamless_map_parameters_t { seamless_map_parameters };
 enum jog_refinement_t { jog_refinement };
 enum singular_vertex_relocation_t { singular_vertex_relocation };
+enum maximum_continuation_steps_t { maximum_continuation_steps };
 } // namespace internal_np
 
 /// \ingroup PkgHexahedralRemeshingRef
@@ -84,6 +85,9 @@ template <class T> unspecified_type jog_refinement(const T& value);
 /// Integer-grid map: move the interior vertices of the singular curves towards their holonomy axes
 /// before the map (`bool`, default `false`).
 template <class T> unspecified_type singular_vertex_relocation(const T& value);
+/// Integer-grid map: steps of the continuation from the seamless map when the repaired map folds or
+/// branches (`int` >= 0, default 60; 0: none).
+template <class T> unspecified_type maximum_continuation_steps(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_stiffening_iterations)
@@ -93,6 +97,7 @@ CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(quantization_time_limit)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(seamless_map_parameters)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(jog_refinement)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(singular_vertex_relocation)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_continuation_steps)
 #endif
 } // namespace parameters
 
@@ -221,6 +226,42 @@ struct Integer_grid_map_complex
 };
 
 /// \ingroup PkgHexahedralRemeshingRef
+/// The quantized map reached from the seamless map without a fold (issue 27, the re-embedding). When the
+/// map still folds after its repair, or branches (every tetrahedron positive, but the map turns around an
+/// interior edge by a number of quarter turns other than 3, 4 or 5: the untangling of a folded map can
+/// wrap it the wrong way), and the seamless map folds nowhere (the structurally flat tetrahedra left
+/// out), the seamless map is moved to the integer values in steps: along the linear response to the
+/// change of the integer values, each step halved until no tetrahedron folds, then relaxed by the
+/// foldover-free energy's barrier. The angle sum around an edge changes only when a tetrahedron of its
+/// ring goes through zero volume, so the map reached turns around every edge as the seamless map does.
+struct Integer_grid_map_continuation
+{
+  /// True if it ran (the repaired map folded or branched, the seamless map did neither).
+  bool ran = false;
+  /// True if the integer values were reached (else the steps ran out or became too short).
+  bool reached = false;
+  /// True if the map reached, with no fold and no branched edge, replaced the repaired map.
+  bool kept = false;
+  /// Steps taken, and steps halved because the map would have folded.
+  int steps = 0;
+  /// See `steps`.
+  int halvings = 0;
+  /// How far the map got from the seamless values (0) to the integer ones (1).
+  double parameter = 0;
+  /// Folded tetrahedra (`det J <= 0`, the structurally flat ones left out) and branched edges of the
+  /// repaired map (branched edges counted only without folds).
+  std::size_t folds_before = 0;
+  /// See `folds_before`.
+  std::size_t branched_before = 0;
+  /// Folded tetrahedra and branched edges of the map reached (if reached).
+  std::size_t folds_after = 0;
+  /// See `folds_after`.
+  std::size_t branched_after = 0;
+  /// Seconds.
+  double seconds = 0;
+};
+
+/// \ingroup PkgHexahedralRemeshingRef
 /// Report of `compute_integer_grid_map()`.
 struct Integer_grid_map_result
 {
@@ -306,6 +347,8 @@ struct Integer_grid_map_result
   std::size_t separation_variables = 0;
   /// Seconds of the programs (Cbc).
   double separation_seconds = 0;
+  /// The map reached from the seamless map without a fold, when the repaired map folds or branches.
+  Integer_grid_map_continuation continuation;
   /// Stiffening rounds run (0 if the local untangling of the rounded map repaired it).
   int stiffening_rounds = 0;
   /// True if the foldover-free untangling ran (only when tetrahedra other than the structurally flat
@@ -355,8 +398,9 @@ struct Integer_grid_map_result
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of `compute_integer_grid_map()`: called when a stage starts and ends (`"cut"`,
 /// `"reduction"`, `"elimination"`, `"seamless_map"`, `"rounding"`, `"untangling"`, `"stiffening"`, `"untangling"`,
-/// `"sanitizing"`; the repair stages only while tetrahedra are inverted: the untangling runs first
-/// around the folds of the rounded map, and the stiffening and a second untangling only if folds remain).
+/// `"continuation"`, `"sanitizing"`; the repair stages only while tetrahedra are inverted: the untangling runs
+/// first around the folds of the rounded map, and the stiffening and a second untangling only if folds remain;
+/// the continuation only if the repaired map folds or branches).
 struct Integer_grid_map_visitor
 {
   /// Called when a stage starts.
@@ -409,6 +453,7 @@ struct Map_options
   std::vector<std::array<Eigen::Vector3d, 4> >* seamless_parameters = nullptr;
   bool jog_refinement = false;
   bool relocation = false;
+  int maximum_continuation_steps = 60;
 };
 
 template <class Traits, class NamedParameters>
@@ -428,6 +473,9 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
   o.untangle = choose_parameter(get_parameter(np, internal_np::untangling), true);
   o.jog_refinement = choose_parameter(get_parameter(np, internal_np::jog_refinement), false);
   o.relocation = choose_parameter(get_parameter(np, internal_np::singular_vertex_relocation), false);
+  o.maximum_continuation_steps = choose_parameter(get_parameter(np, internal_np::maximum_continuation_steps), 60);
+  if(o.maximum_continuation_steps < 0)
+    throw Input_error(source, 0, "compute_integer_grid_map: maximum_continuation_steps must be >= 0");
   o.quantization = choose_parameter(get_parameter(np, internal_np::quantization), Integer_grid_map_quantization::AUTOMATIC);
   o.quantization_time_limit = choose_parameter(get_parameter(np, internal_np::quantization_time_limit), 60.0);
   if(!(o.quantization_time_limit >= 0) || !std::isfinite(o.quantization_time_limit))
@@ -461,7 +509,9 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 /// singular and feature lines that the seamless map keeps apart along an axis) searched around the
 /// folds in the tetrahedral mesh, and a program that satisfies them (robust_pipeline.md §3); a
 /// program's map is kept only if it does not fold; repair of the folds (foldover-free untangling around them, then stiffening of
-/// distorted tetrahedra and untangling everywhere if folds remain); snapping to a dyadic
+/// distorted tetrahedra and untangling everywhere if folds remain); if the repaired map still folds or
+/// branches (`Integer_grid_map_continuation`) and the seamless map folds nowhere, the integer values
+/// reached from the seamless map by steps on which no tetrahedron folds; snapping to a dyadic
 /// grid so that every transition holds exactly in double.
 ///
 /// \param mesh the tetrahedral mesh of the frame field
@@ -506,6 +556,11 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 ///     \cgalParamDescription{move every interior vertex of a singular curve (two singular edges of valence 3 or 5, no other) towards the position that aligns its two edges with their holonomy axes, within an inversion barrier (exact orientations; no tetrahedron around it worse than half its worst start shape), in Gauss-Seidel sweeps; the map is computed on the moved mesh. Nodes, boundary vertices and the boundary stay}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_continuation_steps}
+///     \cgalParamDescription{steps of the continuation from the seamless map to the integer values when the repaired map folds or branches (every tetrahedron positive, but an interior edge turned by a number of quarter turns other than 3, 4 or 5); each step moves the map along the linear response to the integer values, halved until no tetrahedron folds, then relaxed by the foldover-free barrier; the map reached is kept if it neither folds nor branches (`Integer_grid_map_result::continuation`); 0 turns it off}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{seamless_map_parameters}
 ///     \cgalParamDescription{receives the corner parameters (in hex edges) of the seamless map before any rounding, after its untangling: one array of four points per tetrahedron, in the order of its vertices}

@@ -17,6 +17,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_energy.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_quantization.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_continuation.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/program_reembedding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/reduced_system.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
@@ -138,6 +139,13 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
     const Program_reembedding pr = reembed_program_lengths(mesh, in, H, rhs, q.alternative, o.untangle, o.maximum_stiffening,
                                                            o.untangling_rings, solver, visitor, y);
     report_program_reembedding(pr, r);
+    Map_continuation mc = seamless_folds == 0 && o.untangle ? continuation_needed(mesh, in, y) : Map_continuation();
+    if(mc.ran) {
+      stage.start("continuation");
+      continue_from_seamless_map(mesh, in, H, rhs, seamless.y, o.maximum_continuation_steps, solver, mc, y);
+      stage.end();
+    }
+    report_map_continuation(mc, r);
   }
 
   stage.start("sanitizing");

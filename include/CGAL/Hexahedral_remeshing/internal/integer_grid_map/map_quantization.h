@@ -6,6 +6,7 @@
 
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/fixed_variable_solver.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_continuation.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/complex_quantizer.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/program_reembedding.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/seamless_map.h>
@@ -163,6 +164,24 @@ void report_program_reembedding(const Program_reembedding& pr, Result& r)
   r.stiffening_rounds = pr.repair.stiffening_rounds;
   r.quantization_reason = "the complex's lengths, re-embedded by the untangling: " + std::to_string(pr.folds_program) +
                           " folded tetrahedra against " + std::to_string(pr.folds_quantized) + " for " + replaced + " map once repaired";
+}
+
+// The continuation from the seamless map in the report (`Result`: Integer_grid_map_result).
+template <class Result>
+void report_map_continuation(const Map_continuation& mc, Result& r)
+{
+  auto& c = r.continuation;
+  c.ran = mc.ran;
+  c.reached = mc.reached;
+  c.kept = mc.kept;
+  c.steps = mc.steps;
+  c.halvings = mc.halvings;
+  c.parameter = mc.parameter;
+  c.folds_before = mc.folds_before;
+  c.branched_before = mc.branched_before;
+  c.folds_after = mc.folds_after;
+  c.branched_after = mc.branched_after;
+  c.seconds = mc.seconds;
 }
 
 // The status of the map, the most serious first (`Result`: Integer_grid_map_result).
