@@ -10,6 +10,7 @@
 #include <CGAL/Hexahedral_remeshing/integer_grid_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/constraint_elimination.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/greedy_rounding.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/map_continuation.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/structurally_flat.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/signed_union_find.h>
@@ -486,6 +487,106 @@ TEST(IntegerGridMapParts, LocalUntanglingMovesOnlyTheRegion)
         EXPECT_TRUE(in_region[v]) << v;
       }
   EXPECT_GT(changed, 0u);
+}
+
+// The branched edges of a map are counted from its corner scalars alone: a ring of n tetrahedra around the
+// edge (0,0,0)-(0,0,1) whose parameters turn by `step` degrees per tetrahedron (the last one's far corner
+// at n * step): 8 x 90 degrees (twice around) and 4 x 22.5 degrees (a quarter turn) are branched, 5 x 90
+// degrees (a valence-5 edge) is not. Every tetrahedron is positive in space and in parameters.
+TEST(IntegerGridMapParts, BranchedEdgesAreCountedFromTheCornerParameters)
+{
+  const double pi = 3.14159265358979323846;
+  for(int n : {4, 5, 8}) {
+    const double step = n == 4 ? 22.5 : 90.;
+    HR::Tetrahedral_soup_3<Point> soup;
+    soup.points = {Point(0, 0, 0), Point(0, 0, 1)};
+    for(int k = 0; k < n; ++k) soup.points.emplace_back(std::cos(2 * pi * k / n), std::sin(2 * pi * k / n), 0.5);
+    for(int k = 0; k < n; ++k) soup.tetrahedra.push_back({0, 1, std::size_t(2 + k), std::size_t(2 + (k + 1) % n)});
+    Mesh m;
+    HR::build_tetrahedral_mesh(soup, m, HR::parameters::split_multi_boundary_tetrahedra(false));
+    ASSERT_EQ(m.number_of_tetrahedra(), std::size_t(n));
+    auto param = [&](int k) { return Eigen::Vector3d(std::cos(k * step * pi / 180), std::sin(k * step * pi / 180), 0.5); };
+    Eigen::VectorXd x(12 * n);
+    for(int t = 0; t < n; ++t) {
+      const auto& tv = m.tetrahedron_vertices(Index(t));
+      // the ring position k of the tetrahedron: its two ring vertices are 2 + k and 2 + (k + 1) % n
+      std::vector<int> ring;
+      for(Index v : tv)
+        if(v >= 2) ring.push_back(int(v) - 2);
+      ASSERT_EQ(ring.size(), 2u);
+      const int k = (ring[0] + 1) % n == ring[1] ? ring[0] : ring[1];
+      for(int c = 0; c < 4; ++c) {
+        const int v = int(tv[std::size_t(c)]);
+        const Eigen::Vector3d u = v == 0 ? Eigen::Vector3d(0, 0, 0) : v == 1 ? Eigen::Vector3d(0, 0, 1) : param(v - 2 == k ? k : k + 1);
+        x.segment<3>(12 * t + 3 * c) = u;
+      }
+    }
+    for(CGAL::Orientation o : HR::internal::parameter_orientations(x)) EXPECT_EQ(o, CGAL::POSITIVE) << n;
+    EXPECT_EQ(HR::internal::count_branched_edges(m, x), n == 5 ? 0u : 1u) << n;
+  }
+}
+
+// The continuation from the seamless map reaches the integer values without folding: the unit cube with
+// the identity frames at 10 parameter units per model unit, the x scalars of the vertices on the faces
+// x = 0 and x = 1 integer. The repaired map to start from moves those of x = 1 to 3 + 2 sin(pi y) sin(pi z)
+// and nothing else, which folds every tetrahedron between the moved face and the interior vertices beyond
+// it. The map reached holds the integer values exactly, and every tetrahedron is positive (exact
+// orientation, checked here) with no branched edge.
+TEST(IntegerGridMapParts, ContinuationReachesTheIntegerValuesWithoutFolding)
+{
+  const Mesh m = load(example_data + "/cube.off", 0.001);
+  const std::size_t nt = m.number_of_tetrahedra(), nv = m.number_of_vertices();
+  const HR::internal::Map_geometry geometry = HR::internal::compute_map_geometry(m);
+  std::vector<Eigen::Triplet<double> > tr;
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int c = 0; c < 4; ++c)
+      for(int r = 0; r < 3; ++r) tr.emplace_back(int(12 * t + 3 * c + r), int(3 * m.tetrahedron_vertices(Index(t))[c] + r), 1.0);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> P(Eigen::Index(12 * nt), Eigen::Index(3 * nv));
+  P.setFromTriplets(tr.begin(), tr.end());
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(Eigen::Index(12 * nt));
+  const double s = 10;
+  const double pi = 3.14159265358979323846;
+  const std::vector<Eigen::Matrix3d> frames(nt, Eigen::Matrix3d::Identity());
+  const std::vector<char> flat(nt, 0);
+  std::vector<char> integer(std::size_t(3 * nv), 0);
+  Eigen::VectorXd seamless(Eigen::Index(3 * nv)), y;
+  for(Index v = 0; v < nv; ++v)
+    for(int r = 0; r < 3; ++r) seamless[3 * v + r] = s * CGAL::to_double(m.point(v)[r]);
+  y = seamless;
+  std::size_t moved = 0;
+  for(Index v = 0; v < nv; ++v) {
+    const Point p = m.point(v);
+    if(p.x() == 0 || p.x() == 1) integer[3 * v] = 1;
+    if(p.x() == 1) {
+      y[3 * v] = 3 + 2 * std::sin(pi * CGAL::to_double(p.y())) * std::sin(pi * CGAL::to_double(p.z()));
+      ++moved;
+    }
+  }
+  ASSERT_GT(moved, 10u);
+  Eigen::SparseMatrix<double> H;
+  Eigen::VectorXd rhs;
+  HR::internal::assemble_reduced_system(geometry, frames, s, std::vector<double>(), P, x0, H, rhs);
+  HR::internal::Fixed_variable_solver solver;
+  const HR::internal::Fold_repair_input in{geometry, frames, s, P, x0, integer, flat};
+  const Eigen::VectorXd target = y;
+  HR::internal::Map_continuation c = HR::internal::continuation_needed(m, in, y);
+  ASSERT_TRUE(c.ran);
+  EXPECT_GT(c.folds_before, 0u);
+  HR::internal::continue_from_seamless_map(m, in, H, rhs, seamless, 60, solver, c, y);
+  EXPECT_TRUE(c.reached);
+  EXPECT_TRUE(c.kept);
+  EXPECT_GE(c.steps, 1);
+  for(Eigen::Index j = 0; j < y.size(); ++j)
+    if(integer[std::size_t(j)]) ASSERT_EQ(y[j], target[j]) << j;
+  const Eigen::VectorXd x = P * y + x0;
+  std::size_t not_positive = 0;
+  for(std::size_t t = 0; t < nt; ++t) {
+    K::Point_3 q[4];
+    for(int k = 0; k < 4; ++k) q[k] = K::Point_3(x[12 * t + 3 * k], x[12 * t + 3 * k + 1], x[12 * t + 3 * k + 2]);
+    not_positive += CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE;
+  }
+  EXPECT_EQ(not_positive, 0u);
+  EXPECT_EQ(HR::internal::count_branched_edges(m, x), 0u);
 }
 
 TEST(IntegerGridMap, CubeHasNCubedUnitCells)
