@@ -572,7 +572,7 @@ TEST(IntegerGridMapParts, ContinuationReachesTheIntegerValuesWithoutFolding)
   HR::internal::Map_continuation c = HR::internal::continuation_needed(m, in, y);
   ASSERT_TRUE(c.ran);
   EXPECT_GT(c.folds_before, 0u);
-  HR::internal::continue_from_seamless_map(m, in, H, rhs, seamless, 60, solver, c, y);
+  HR::internal::continue_from_seamless_map(m, in, H, rhs, seamless, target, 60, solver, c, y);
   EXPECT_TRUE(c.reached);
   EXPECT_TRUE(c.kept);
   EXPECT_GE(c.steps, 1);

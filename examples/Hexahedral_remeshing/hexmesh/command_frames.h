@@ -73,6 +73,7 @@ struct Frame_field_options
     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::AUTOMATIC;
   // the map on a mesh whose singular curves' vertices moved towards their axes (parametrize, remesh)
   bool relocation = false;
+  int continuation_steps = 60; // 0 with --no-continuation
   // --acute-edge-band: radius in model units (0: none); negative when absent (the command's default)
   double acute_edge_band = -1;
   // --field-initialization: the field the smoothing starts from (remesh: the relaxation, then the
@@ -92,6 +93,7 @@ inline Frame_field_options frame_field_options(const Arguments& args)
   o.repair = o.baseline ? args.has("repair") : !args.has("no-repair");
   if(args.has("greedy-rounding")) o.quantization = CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::GREEDY_ROUNDING;
   o.relocation = args.has("relocate-singular-vertices");
+  if(args.has("no-continuation")) o.continuation_steps = 0;
   o.quiet = args.has("quiet");
   if(args.has("acute-edge-band")) {
     o.acute_edge_band = args.number("acute-edge-band", 0.);

@@ -35,7 +35,7 @@ inline std::vector<std::string> parametrize_options()
   return options;
 }
 
-inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> parametrize_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-continuation", "no-chord-split", "no-acute-grading", "keep-partial", "quiet"}; }
 
 // The --target-edge-length option: a positive number of model units, 0 when absent (default size).
 inline double target_edge_length_option(const Arguments& args)
@@ -58,7 +58,7 @@ struct Map_progress_visitor : CGAL::Hexahedral_remeshing::Integer_grid_map_visit
 inline CGAL::Hexahedral_remeshing::Integer_grid_map_result
 run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& f,
                      double target_edge_length, CGAL::Hexahedral_remeshing::Integer_grid_map& map, Progress& progress,
-                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization, bool relocation)
+                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization, bool relocation, int continuation_steps)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
@@ -66,9 +66,9 @@ run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahe
   try {
     if(target_edge_length > 0)
       return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                          HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::target_edge_length(target_edge_length))).visitor(std::ref(visitor)));
+                                          HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::maximum_continuation_steps(continuation_steps, HP::target_edge_length(target_edge_length)))).visitor(std::ref(visitor)));
     return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                        HP::quantization(quantization, HP::singular_vertex_relocation(relocation)).visitor(std::ref(visitor)));
+                                        HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::maximum_continuation_steps(continuation_steps))).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {
@@ -122,11 +122,12 @@ inline std::string continuation_summary(const CGAL::Hexahedral_remeshing::Intege
   std::ostringstream os;
   os << "from the seamless map without a fold: ";
   if(c.reached)
-    os << "integer values reached in " << c.steps << " steps (" << c.halvings << " halved), " << (c.kept ? "kept" : "not kept")
+    os << (c.program_lengths ? "the complex's lengths" : "the quantized values") << " reached in " << c.steps << " steps (" << c.halvings << " halved), " << (c.kept ? "kept" : "not kept")
        << ": folds " << c.folds_before << " -> " << c.folds_after << ", branched edges " << c.branched_before << " -> " << c.branched_after;
   else
-    os << "stopped at " << c.parameter << " of the way after " << c.steps << " steps (" << c.halvings << " halved); the repaired map kept ("
-       << c.folds_before << " folds, " << c.branched_before << " branched edges)";
+    os << "stopped at " << c.parameter << " of the way to " << (c.program_lengths ? "the complex's lengths" : "the quantized values")
+       << " after " << c.steps << " steps (" << c.halvings << " halved); the quantized map repaired instead (" << c.folds_before
+       << " folds, " << c.branched_before << " branched edges)";
   os << ", " << c.seconds << " s";
   return os.str();
 }
@@ -181,6 +182,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("ran", m.continuation.ran)
       .value("reached", m.continuation.reached)
       .value("kept", m.continuation.kept)
+      .value("program_lengths", m.continuation.program_lengths)
       .value("steps", m.continuation.steps)
       .value("halvings", m.continuation.halvings)
       .value("parameter", m.continuation.parameter)
@@ -278,6 +280,8 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
             ? "separation program: " + std::to_string(m.folds_after_rounding) + " folded tetrahedra after the rounding, " +
                 std::to_string(m.folds_after_separation) + " after " + std::to_string(m.separation_rounds) + " program(s) with " +
                 std::to_string(m.separation_constraints) + " separation constraint(s)"
+            : m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX && m.continuation.kept
+                ? "the motorcycle complex's program (" + m.quantization_reason + ")"
             : m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX && m.motorcycle_complex.reembedded
                 ? "the motorcycle complex's program, re-embedded (" + m.quantization_reason + ")"
             : m.quantization == CGAL::Hexahedral_remeshing::Integer_grid_map_quantization::MOTORCYCLE_COMPLEX
@@ -319,7 +323,7 @@ inline int command_parametrize(const Arguments& args)
   const double hex_edge = HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
   const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, 2 * hex_edge, hex_edge);
   HR::Integer_grid_map map;
-  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization, options.relocation);
+  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization, options.relocation, options.continuation_steps);
   progress.start("checking the map");
   const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
   const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, f.valences, check);

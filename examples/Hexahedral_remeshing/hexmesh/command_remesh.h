@@ -34,7 +34,7 @@ inline std::vector<std::string> remesh_options()
   return options;
 }
 
-inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-smoothing", "no-chord-split", "no-tet-refinement", "no-acute-grading", "keep-partial", "quiet"}; }
+inline std::vector<std::string> remesh_flags() { return {"baseline", "repair", "no-repair", "greedy-rounding", "relocate-singular-vertices", "no-continuation", "no-smoothing", "no-chord-split", "no-tet-refinement", "no-acute-grading", "keep-partial", "quiet"}; }
 
 inline int command_remesh(const Arguments& args)
 {
@@ -73,9 +73,9 @@ inline int command_remesh(const Arguments& args)
       HP::valence_heuristic(options.heuristic, HP::prescribed_edge_valences(std::cref(prescribed),
         HP::baseline(options.baseline, HP::realignment(options.realign, HP::singularity_repair(options.repair,
         HP::hexahedral_smoothing(!args.has("no-smoothing"), HP::acute_edge_band_radius(options.acute_edge_band,
-        HP::quantization(options.quantization, HP::singular_vertex_relocation(options.relocation, HP::integer_grid_map_output(std::ref(map),
+        HP::quantization(options.quantization, HP::singular_vertex_relocation(options.relocation, HP::maximum_continuation_steps(options.continuation_steps, HP::integer_grid_map_output(std::ref(map),
         HP::tetrahedron_refinement(!args.has("no-tet-refinement"), HP::refined_mesh_output(std::ref(refined),
-        HP::frame_field_initialization(options.initialization, size))))))))))))).visitor(std::ref(visitor)));
+        HP::frame_field_initialization(options.initialization, size)))))))))))))).visitor(std::ref(visitor)));
   };
   try {
     if(target > 0) r = run(HP::target_edge_length(target));

@@ -85,7 +85,7 @@ template <class T> unspecified_type jog_refinement(const T& value);
 /// Integer-grid map: move the interior vertices of the singular curves towards their holonomy axes
 /// before the map (`bool`, default `false`).
 template <class T> unspecified_type singular_vertex_relocation(const T& value);
-/// Integer-grid map: steps of the continuation from the seamless map when the repaired map folds or
+/// Integer-grid map: steps of the continuation from the seamless map when the quantized map folds or
 /// branches (`int` >= 0, default 60; 0: none).
 template <class T> unspecified_type maximum_continuation_steps(const T& value);
 #else
@@ -227,29 +227,36 @@ struct Integer_grid_map_complex
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// The quantized map reached from the seamless map without a fold (issue 27, the re-embedding). When the
-/// map still folds after its repair, or branches (every tetrahedron positive, but the map turns around an
-/// interior edge by a number of quarter turns other than 3, 4 or 5: the untangling of a folded map can
-/// wrap it the wrong way), and the seamless map folds nowhere (the structurally flat tetrahedra left
-/// out), the seamless map is moved to the integer values in steps: along the linear response to the
-/// change of the integer values, each step halved until no tetrahedron folds, then relaxed by the
-/// foldover-free energy's barrier. The angle sum around an edge changes only when a tetrahedron of its
-/// ring goes through zero volume, so the map reached turns around every edge as the seamless map does.
+/// quantized map folds (or branches: every tetrahedron positive, but the map turns around an interior edge
+/// by a number of quarter turns other than 3, 4 or 5) and the seamless map folds nowhere (the structurally
+/// flat tetrahedra left out), the seamless map is moved to the quantized integer values in steps: along the
+/// linear response to the change of the integer values, each step halved until no tetrahedron folds, then
+/// relaxed by the foldover-free energy's barrier. When the quantizer kept values other than the motorcycle
+/// complex's program's lengths (their linear map folded more), those lengths, which admit a valid map
+/// (QGP3D), are the first target and the quantized values the second. The angle sum around an edge changes only when a tetrahedron of its ring
+/// goes through zero volume, so the map reached turns around every edge as the seamless map does, which the
+/// repair of the folds (the untangling) does not ensure: it runs only if the continuation was not kept.
 struct Integer_grid_map_continuation
 {
-  /// True if it ran (the repaired map folded or branched, the seamless map did neither).
+  /// True if it ran (the quantized map folded or branched, the seamless map did neither).
   bool ran = false;
   /// True if the integer values were reached (else the steps ran out or became too short).
   bool reached = false;
-  /// True if the map reached, with no fold and no branched edge, replaced the repaired map.
+  /// True if the map reached, with no fold and no branched edge, replaced the quantized map (no repair
+  /// of the folds then runs).
   bool kept = false;
-  /// Steps taken, and steps halved because the map would have folded.
+  /// True if the last target was the complex's program's lengths (kept: `quantization` is then
+  /// `MOTORCYCLE_COMPLEX`); false if it was the quantized values (the lengths were not reached, or the
+  /// quantizer kept them).
+  bool program_lengths = false;
+  /// Steps taken, and steps halved because the map would have folded (both targets together).
   int steps = 0;
   /// See `steps`.
   int halvings = 0;
   /// How far the map got from the seamless values (0) to the integer ones (1).
   double parameter = 0;
   /// Folded tetrahedra (`det J <= 0`, the structurally flat ones left out) and branched edges of the
-  /// repaired map (branched edges counted only without folds).
+  /// quantized map (branched edges counted only without folds).
   std::size_t folds_before = 0;
   /// See `folds_before`.
   std::size_t branched_before = 0;
@@ -347,7 +354,7 @@ struct Integer_grid_map_result
   std::size_t separation_variables = 0;
   /// Seconds of the programs (Cbc).
   double separation_seconds = 0;
-  /// The map reached from the seamless map without a fold, when the repaired map folds or branches.
+  /// The map reached from the seamless map without a fold, when the quantized map folds or branches.
   Integer_grid_map_continuation continuation;
   /// Stiffening rounds run (0 if the local untangling of the rounded map repaired it).
   int stiffening_rounds = 0;
@@ -397,10 +404,11 @@ struct Integer_grid_map_result
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of `compute_integer_grid_map()`: called when a stage starts and ends (`"cut"`,
-/// `"reduction"`, `"elimination"`, `"seamless_map"`, `"rounding"`, `"untangling"`, `"stiffening"`, `"untangling"`,
-/// `"continuation"`, `"sanitizing"`; the repair stages only while tetrahedra are inverted: the untangling runs
-/// first around the folds of the rounded map, and the stiffening and a second untangling only if folds remain;
-/// the continuation only if the repaired map folds or branches).
+/// `"reduction"`, `"elimination"`, `"seamless_map"`, `"rounding"`, `"continuation"`, `"untangling"`, `"stiffening"`,
+/// `"untangling"`, `"sanitizing"`; the continuation only if the quantized map folds or branches and the
+/// seamless map does not; the repair stages only while tetrahedra are inverted and the continuation was not
+/// kept: the untangling runs first around the folds of the rounded map, and the stiffening and a second
+/// untangling only if folds remain).
 struct Integer_grid_map_visitor
 {
   /// Called when a stage starts.
@@ -509,9 +517,9 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 /// singular and feature lines that the seamless map keeps apart along an axis) searched around the
 /// folds in the tetrahedral mesh, and a program that satisfies them (robust_pipeline.md §3); a
 /// program's map is kept only if it does not fold; repair of the folds (foldover-free untangling around them, then stiffening of
-/// distorted tetrahedra and untangling everywhere if folds remain); if the repaired map still folds or
-/// branches (`Integer_grid_map_continuation`) and the seamless map folds nowhere, the integer values
-/// reached from the seamless map by steps on which no tetrahedron folds; snapping to a dyadic
+/// distorted tetrahedra and untangling everywhere if folds remain), unless the seamless map folds nowhere
+/// and the integer values are reached from it by steps on which no tetrahedron folds
+/// (`Integer_grid_map_continuation`), which runs first; snapping to a dyadic
 /// grid so that every transition holds exactly in double.
 ///
 /// \param mesh the tetrahedral mesh of the frame field
@@ -558,7 +566,7 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_continuation_steps}
-///     \cgalParamDescription{steps of the continuation from the seamless map to the integer values when the repaired map folds or branches (every tetrahedron positive, but an interior edge turned by a number of quarter turns other than 3, 4 or 5); each step moves the map along the linear response to the integer values, halved until no tetrahedron folds, then relaxed by the foldover-free barrier; the map reached is kept if it neither folds nor branches (`Integer_grid_map_result::continuation`); 0 turns it off}
+///     \cgalParamDescription{steps of the continuation from the seamless map to the integer values (to each of the two targets: the complex's lengths if the quantizer kept other values, then the quantized values) when the quantized map folds or branches (every tetrahedron positive, but an interior edge turned by a number of quarter turns other than 3, 4 or 5) and the seamless map folds nowhere; each step moves the map along the linear response to the integer values, halved until no tetrahedron folds, then relaxed by the foldover-free barrier; the map reached is kept if it neither folds nor branches (`Integer_grid_map_result::continuation`), else the folds are repaired by the untangling; 0 turns it off}
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd

@@ -66,6 +66,46 @@ bool trace_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMa
   return true;
 }
 
+// The quantized map `y` made fold-free. When the seamless map folds nowhere (the structurally flat
+// tetrahedra left out), first the continuation from it to the complex's program's lengths when the
+// quantizer kept other values (the program's lengths admit a valid map, QGP3D), then to the quantized
+// values (map_continuation.h): every tetrahedron stays positive on the way, so the map reached
+// neither folds nor branches. Otherwise, or if neither is reached, the repair of the folds (fold_repair.h)
+// and the re-embedding of the program's lengths (program_reembedding.h).
+template <class Traits, class Options, class Visitor, class Result>
+void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, const Eigen::SparseMatrix<double>& H,
+                        const Eigen::VectorXd& rhs, const Eigen::VectorXd& seamless_y, std::size_t seamless_folds,
+                        const Quantization_result& q, const Options& o, Fixed_variable_solver& solver, Visitor& visitor,
+                        Eigen::VectorXd& y, Result& r)
+{
+  Map_stage_timer<Visitor> stage{visitor};
+  Map_continuation mc =
+    seamless_folds == 0 && o.untangle && o.maximum_continuation_steps > 0 ? continuation_needed(mesh, in, y) : Map_continuation();
+  if(mc.ran) {
+    stage.start("continuation");
+    Eigen::VectorXd lengths = y;
+    for(const auto& l : q.alternative) lengths[l.first] = l.second;
+    mc.program_lengths = lengths != y;
+    if(mc.program_lengths)
+      continue_from_seamless_map(mesh, in, H, rhs, seamless_y, lengths, o.maximum_continuation_steps, solver, mc, y);
+    if(!mc.kept) {
+      mc.program_lengths = false;
+      continue_from_seamless_map(mesh, in, H, rhs, seamless_y, y, o.maximum_continuation_steps, solver, mc, y);
+    }
+    stage.end();
+  }
+  report_map_continuation(mc, r);
+  if(mc.kept) return;
+  const Fold_repair_report fr = repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y);
+  r.stiffening_rounds = fr.stiffening_rounds;
+  r.untangling_ran = r.untangling_ran || fr.untangling_ran;
+  r.stiffening_seconds = fr.stiffening_seconds;
+  r.untangling_seconds = fr.untangling_seconds;
+  const Program_reembedding pr = reembed_program_lengths(mesh, in, H, rhs, q.alternative, o.untangle, o.maximum_stiffening,
+                                                         o.untangling_rings, solver, visitor, y);
+  report_program_reembedding(pr, r);
+}
+
 // The stages of compute_integer_grid_map() on the map's mesh (the input mesh, or its copy with the
 // jog chords split): cut, reduction, elimination, seamless map, quantization, repair of the folds,
 // sanitizing and assembly. `Options`: Map_options; `Result`: Integer_grid_map_result.
@@ -130,22 +170,7 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
 
   if(q.success) {
     const Fold_repair_input in{geometry, frames, s, P, x0, reduced.integer_column, flat};
-    const Fold_repair_report fr =
-      repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y);
-    r.stiffening_rounds = fr.stiffening_rounds;
-    r.untangling_ran = r.untangling_ran || fr.untangling_ran;
-    r.stiffening_seconds = fr.stiffening_seconds;
-    r.untangling_seconds = fr.untangling_seconds;
-    const Program_reembedding pr = reembed_program_lengths(mesh, in, H, rhs, q.alternative, o.untangle, o.maximum_stiffening,
-                                                           o.untangling_rings, solver, visitor, y);
-    report_program_reembedding(pr, r);
-    Map_continuation mc = seamless_folds == 0 && o.untangle ? continuation_needed(mesh, in, y) : Map_continuation();
-    if(mc.ran) {
-      stage.start("continuation");
-      continue_from_seamless_map(mesh, in, H, rhs, seamless.y, o.maximum_continuation_steps, solver, mc, y);
-      stage.end();
-    }
-    report_map_continuation(mc, r);
+    make_map_fold_free(mesh, in, H, rhs, seamless.y, seamless_folds, q, o, solver, visitor, y, r);
   }
 
   stage.start("sanitizing");

@@ -12,7 +12,8 @@
 // keeps every turn right. The integer values are reached in steps: each step moves the map along the
 // linear response to the change of the integer values, is halved until no tetrahedron folds, and the
 // map is then relaxed by the foldover-free energy's barrier (which never inverts a tetrahedron), which
-// makes room for the next step.
+// makes room for the next step. Integer values that collapse a block cannot be reached: the steps
+// shrink below 1/4096 of the way and the continuation stops.
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_CONTINUATION_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_CONTINUATION_H
 
@@ -75,15 +76,16 @@ struct Map_continuation
 {
   bool ran = false;           // the map folded or branched after its repair, the seamless map did neither
   bool reached = false;       // the integer values were reached without a fold
-  bool kept = false;          // the map reached replaced the repaired one
+  bool kept = false;          // the map reached replaced the quantized one
+  bool program_lengths = false; // the last target was the complex's program's lengths (the quantized values failed)
   int steps = 0, halvings = 0;
   double parameter = 0;       // how far along the path the map got, in [0, 1]
-  std::size_t folds_before = 0, branched_before = 0; // the repaired map's
+  std::size_t folds_before = 0, branched_before = 0; // the quantized map's
   std::size_t folds_after = 0, branched_after = 0;   // the map reached
   double seconds = 0;
 };
 
-// Whether the repaired map `y` folds or branches (the report's counts before; `ran` set if so).
+// Whether the quantized map `y` folds or branches (the report's counts before; `ran` set if so).
 template <class Traits>
 Map_continuation continuation_needed(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, const Eigen::VectorXd& y)
 {
@@ -94,15 +96,14 @@ Map_continuation continuation_needed(const Tetrahedral_mesh_3<Traits>& mesh, con
   return r;
 }
 
-// Moves the seamless map `seamless_y` (no fold outside `in.flat`) to the integer values of `y` (the
-// quantized map after its repair, which folds or branches: continuation_needed()); kept in `y` if it
-// gets there with neither fold nor branch. `H`, `rhs`: the unstiffened system; `solver`'s fixed values
-// are those of `y` after the call.
+// Moves the seamless map `seamless_y` (no fold outside `in.flat`) to the integer values of `target`
+// without folding; the map reached replaces `y` if it neither folds nor branches (`r.kept`). `H`, `rhs`:
+// the unstiffened system; `solver` keeps that system, with the integer variables fixed at `y`'s values.
 template <class Traits>
 void continue_from_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in,
                                 const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs,
-                                const Eigen::VectorXd& seamless_y, int maximum_steps, Fixed_variable_solver& solver,
-                                Map_continuation& r, Eigen::VectorXd& y)
+                                const Eigen::VectorXd& seamless_y, const Eigen::VectorXd& target, int maximum_steps,
+                                Fixed_variable_solver& solver, Map_continuation& r, Eigen::VectorXd& y)
 {
   typedef std::chrono::steady_clock Clock;
   const auto start = Clock::now();
@@ -113,26 +114,27 @@ void continue_from_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const Fo
     if(in.integer_column[std::size_t(j)]) integer.push_back(j);
   solver.set_system(H, rhs);
   Eigen::VectorXd to, from;
-  for(Eigen::Index j : integer) solver.fix(j, y[j]);
+  for(Eigen::Index j : integer) solver.fix(j, target[j]);
   const bool solved_to = solver.solve(to);
   for(Eigen::Index j : integer) solver.fix(j, seamless_y[j]);
   const bool solved_from = solver.solve(from);
-  for(Eigen::Index j : integer) solver.fix(j, y[j]);
-  if(!solved_to || !solved_from) return;
-  const Eigen::VectorXd direction = to - from;
-
   Eigen::VectorXd z = seamless_y;
-  double t = 0, step = 0.25;
-  while(t < 1 && r.steps < maximum_steps && step > 1. / 4096) {
-    const double next = (std::min)(1., t + step);
-    Eigen::VectorXd trial = z + (next - t) * direction;
-    for(Eigen::Index j : integer) trial[j] = next == 1. ? y[j] : seamless_y[j] + next * (y[j] - seamless_y[j]);
-    if(folds(trial) > 0) { step /= 2; ++r.halvings; continue; }
-    untangle_map(in.geometry, in.frames, in.s, in.P, in.x0, in.integer_column, in.flat, trial, nullptr, true);
-    z = trial;
-    t = next;
-    ++r.steps;
-    step *= 1.5;
+  double t = 0;
+  if(solved_to && solved_from) {
+    const Eigen::VectorXd direction = to - from;
+    double step = 0.25;
+    for(int steps = 0; t < 1 && steps < maximum_steps && step > 1. / 4096;) {
+      const double next = (std::min)(1., t + step);
+      Eigen::VectorXd trial = z + (next - t) * direction;
+      for(Eigen::Index j : integer) trial[j] = next == 1. ? target[j] : seamless_y[j] + next * (target[j] - seamless_y[j]);
+      if(folds(trial) > 0) { step /= 2; ++r.halvings; continue; }
+      untangle_map(in.geometry, in.frames, in.s, in.P, in.x0, in.integer_column, in.flat, trial, nullptr, true);
+      z = trial;
+      t = next;
+      ++steps;
+      ++r.steps;
+      step *= 1.5;
+    }
   }
   r.parameter = t;
   r.reached = t == 1.;
@@ -142,7 +144,8 @@ void continue_from_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const Fo
     r.kept = r.folds_after == 0 && r.branched_after == 0;
     if(r.kept) y = z;
   }
-  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  for(Eigen::Index j : integer) solver.fix(j, y[j]);
+  r.seconds += std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 } // namespace internal

@@ -182,6 +182,11 @@ void report_map_continuation(const Map_continuation& mc, Result& r)
   c.folds_after = mc.folds_after;
   c.branched_after = mc.branched_after;
   c.seconds = mc.seconds;
+  c.program_lengths = mc.program_lengths;
+  if(mc.kept && mc.program_lengths) {
+    r.quantization = decltype(r.quantization)::MOTORCYCLE_COMPLEX;
+    r.quantization_reason = "the complex's lengths, reached from the seamless map without a fold";
+  }
 }
 
 // The status of the map, the most serious first (`Result`: Integer_grid_map_result).
