@@ -66,12 +66,13 @@ bool trace_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMa
   return true;
 }
 
-// The quantized map `y` made fold-free. When the seamless map folds nowhere (the structurally flat
-// tetrahedra left out), first the continuation from it to the complex's program's lengths when the
-// quantizer kept other values (the program's lengths admit a valid map, QGP3D), then to the quantized
-// values (map_continuation.h): every tetrahedron stays positive on the way, so the map reached
-// neither folds nor branches. Otherwise, or if neither is reached, the repair of the folds (fold_repair.h)
-// and the re-embedding of the program's lengths (program_reembedding.h).
+// The quantized map `y` made fold-free. First the local untangling of its folds (the map closest to
+// the quantized one, and cheap), kept if it neither folds nor branches. Then, when the seamless map folds
+// nowhere (the structurally flat tetrahedra left out), the continuation from it to the complex's
+// program's lengths when the quantizer kept other values (the program's lengths admit a valid map,
+// QGP3D), then to the quantized values (map_continuation.h): every tetrahedron stays positive on the way,
+// so the map reached neither folds nor branches. Otherwise, or if neither is reached, the rest of the
+// repair of the folds (fold_repair.h) and the re-embedding of the program's lengths (program_reembedding.h).
 template <class Traits, class Options, class Visitor, class Result>
 void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, const Eigen::SparseMatrix<double>& H,
                         const Eigen::VectorXd& rhs, const Eigen::VectorXd& seamless_y, std::size_t seamless_folds,
@@ -81,6 +82,17 @@ void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repai
   Map_stage_timer<Visitor> stage{visitor};
   Map_continuation mc =
     seamless_folds == 0 && o.untangle && o.maximum_continuation_steps > 0 ? continuation_needed(mesh, in, y) : Map_continuation();
+  const bool local_first = mc.ran && mc.folds_before > 0;
+  if(local_first) {
+    stage.start("untangling");
+    Eigen::VectorXd z = y;
+    const bool repaired = untangle_folds_locally(mesh, in, o.untangling_rings, r.untangling_ran, z) && !continuation_needed(mesh, in, z).ran;
+    r.untangling_seconds += stage.end();
+    if(repaired) {
+      y = z;
+      return;
+    }
+  }
   if(mc.ran) {
     stage.start("continuation");
     Eigen::VectorXd lengths = y;
@@ -96,11 +108,12 @@ void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repai
   }
   report_map_continuation(mc, r);
   if(mc.kept) return;
-  const Fold_repair_report fr = repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y);
+  const Fold_repair_report fr =
+    repair_folds(mesh, in, solver, o.untangle, o.maximum_stiffening, o.untangling_rings, visitor, y, !local_first);
   r.stiffening_rounds = fr.stiffening_rounds;
   r.untangling_ran = r.untangling_ran || fr.untangling_ran;
-  r.stiffening_seconds = fr.stiffening_seconds;
-  r.untangling_seconds = fr.untangling_seconds;
+  r.stiffening_seconds += fr.stiffening_seconds;
+  r.untangling_seconds += fr.untangling_seconds;
   const Program_reembedding pr = reembed_program_lengths(mesh, in, H, rhs, q.alternative, o.untangle, o.maximum_stiffening,
                                                          o.untangling_rings, solver, visitor, y);
   report_program_reembedding(pr, r);
