@@ -228,8 +228,9 @@ struct Integer_grid_map_complex
 /// \ingroup PkgHexahedralRemeshingRef
 /// The quantized map reached from the seamless map without a fold (issue 27, the re-embedding). When the
 /// quantized map folds (or branches: every tetrahedron positive, but the map turns around an interior edge
-/// by a number of quarter turns other than 3, 4 or 5) and the seamless map folds nowhere (the structurally
-/// flat tetrahedra left out), the seamless map is moved to the quantized integer values in steps: along the
+/// by a number of quarter turns other than 3, 4 or 5), the local untangling of its folds leaves a fold or a
+/// branch, and the seamless map folds nowhere (the structurally flat tetrahedra left out), the seamless
+/// map is moved to the quantized integer values in steps: along the
 /// linear response to the change of the integer values, each step halved until no tetrahedron folds, then
 /// relaxed by the foldover-free energy's barrier. When the quantizer kept values other than the motorcycle
 /// complex's program's lengths (their linear map folded more), those lengths, which admit a valid map
@@ -404,11 +405,10 @@ struct Integer_grid_map_result
 
 /// \ingroup PkgHexahedralRemeshingRef
 /// Default visitor of `compute_integer_grid_map()`: called when a stage starts and ends (`"cut"`,
-/// `"reduction"`, `"elimination"`, `"seamless_map"`, `"rounding"`, `"continuation"`, `"untangling"`, `"stiffening"`,
-/// `"untangling"`, `"sanitizing"`; the continuation only if the quantized map folds or branches and the
-/// seamless map does not; the repair stages only while tetrahedra are inverted and the continuation was not
-/// kept: the untangling runs first around the folds of the rounded map, and the stiffening and a second
-/// untangling only if folds remain).
+/// `"reduction"`, `"elimination"`, `"seamless_map"`, `"rounding"`, `"untangling"`, `"continuation"`, `"stiffening"`,
+/// `"untangling"`, `"sanitizing"`; the repair stages only while tetrahedra are inverted: the untangling runs
+/// first around the folds of the rounded map; the continuation if that leaves a fold or a branch and the
+/// seamless map folds nowhere; the stiffening and a second untangling only if folds remain).
 struct Integer_grid_map_visitor
 {
   /// Called when a stage starts.
@@ -517,9 +517,9 @@ Map_options map_options(const Tetrahedral_mesh_3<Traits>& mesh, const NamedParam
 /// singular and feature lines that the seamless map keeps apart along an axis) searched around the
 /// folds in the tetrahedral mesh, and a program that satisfies them (robust_pipeline.md §3); a
 /// program's map is kept only if it does not fold; repair of the folds (foldover-free untangling around them, then stiffening of
-/// distorted tetrahedra and untangling everywhere if folds remain), unless the seamless map folds nowhere
-/// and the integer values are reached from it by steps on which no tetrahedron folds
-/// (`Integer_grid_map_continuation`), which runs first; snapping to a dyadic
+/// distorted tetrahedra and untangling everywhere if folds remain), where the local untangling leaves a
+/// fold or a branch, only if the integer values cannot be reached from the seamless map, when it folds
+/// nowhere, by steps on which no tetrahedron folds (`Integer_grid_map_continuation`); snapping to a dyadic
 /// grid so that every transition holds exactly in double.
 ///
 /// \param mesh the tetrahedral mesh of the frame field
