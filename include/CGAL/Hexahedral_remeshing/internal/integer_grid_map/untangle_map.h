@@ -34,7 +34,8 @@ struct Map_untangling_result
 // tetrahedron), only the continuous variables of the region's tetrahedra move, and the energy is that
 // of the tetrahedra they reach (the others keep their map). The result is kept only if it has fewer
 // inverted tetrahedra. With `relax`, a map without inverted tetrahedra is optimized by the barrier (which
-// never inverts one) for a few iterations instead, and kept if it still has none.
+// never inverts one) for one outer iteration instead (the flange's continuation: 7.5 s for its 18 steps,
+// 13 s with two), and kept if it still has none.
 inline Map_untangling_result untangle_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames,
                                           double s, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
                                           const Eigen::VectorXd& x0, const std::vector<char>& integer,
@@ -108,7 +109,7 @@ inline Map_untangling_result untangle_map(const Map_geometry& geometry, const st
   options.max_inner_iterations = 30;
   if(relax) {
     options.stop_when_untangled = false;
-    options.max_outer_iterations = 2;
+    options.max_outer_iterations = 1;
   }
   const Foldover_free_result f = minimize_foldover_free(problem, z, options);
   r.ran = true;
