@@ -370,6 +370,7 @@ inline int command_parametrize(const Arguments& args)
         .value("rounding", m.rounding_seconds)
         .value("stiffening", m.stiffening_seconds)
         .value("untangling", m.untangling_seconds)
+        .value("continuation", m.continuation.seconds)
         .value("sanitize", m.sanitize_seconds)
         .value("map", m.seconds)
         .end();
@@ -389,7 +390,8 @@ inline int command_parametrize(const Arguments& args)
     std::cout << std::fixed << std::setprecision(2) << "  seconds             read " << read_seconds << ", frame field "
               << f.seconds << ", map " << m.seconds << " (cut " << m.cut_seconds << ", reduction " << m.reduction_seconds
               << ", elimination " << m.elimination_seconds << ", seamless map " << m.seamless_seconds << ", rounding " << m.rounding_seconds << ", stiffening "
-              << m.stiffening_seconds << ", untangling " << m.untangling_seconds << ", sanitize " << m.sanitize_seconds
+              << m.stiffening_seconds << ", untangling " << m.untangling_seconds << ", continuation " << m.continuation.seconds
+              << ", sanitize " << m.sanitize_seconds
               << ")\n" << std::defaultfloat
               << "  map                 " << (write_map ? hexex + " (hexmesh extract " + hexex + " --out OUT.mesh)" : std::string("not written"))
               << "\n";
