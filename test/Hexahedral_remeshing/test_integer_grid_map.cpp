@@ -422,6 +422,33 @@ TEST(IntegerGridMapParts, StructurallyFlatTetrahedraAreFlatForEveryValue)
   }
 }
 
+// The corner scalars of a map without seams: one parameter point per vertex (3 variables each),
+// x = P y with P the 12 nt x 3 nv selection of every tetrahedron's corners.
+static Eigen::SparseMatrix<double, Eigen::RowMajor> identity_corner_map(const Mesh& m)
+{
+  const std::size_t nt = m.number_of_tetrahedra(), nv = m.number_of_vertices();
+  std::vector<Eigen::Triplet<double> > tr;
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int c = 0; c < 4; ++c)
+      for(int r = 0; r < 3; ++r) tr.emplace_back(int(12 * t + 3 * c + r), int(3 * m.tetrahedron_vertices(Index(t))[c] + r), 1.0);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> P(Eigen::Index(12 * nt), Eigen::Index(3 * nv));
+  P.setFromTriplets(tr.begin(), tr.end());
+  return P;
+}
+
+// Tetrahedra whose corner scalars x (12 per tetrahedron) are not positively oriented (exact; the mesh's
+// own tetrahedra are positive in space, so those of the identity map are too).
+static std::size_t not_positive_tetrahedra(const Eigen::VectorXd& x)
+{
+  std::size_t n = 0;
+  for(Eigen::Index t = 0; t < x.size() / 12; ++t) {
+    K::Point_3 q[4];
+    for(int c = 0; c < 4; ++c) q[c] = K::Point_3(x[12 * t + 3 * c], x[12 * t + 3 * c + 1], x[12 * t + 3 * c + 2]);
+    n += CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE;
+  }
+  return n;
+}
+
 // The local untangling on a map without seams: the identity map of a TetGen cube (one parameter
 // point per vertex, 3 continuous variables each) with one interior vertex pushed through its star. It
 // untangles every tetrahedron, and moves only the vertices of the region (3 rings around the folds):
@@ -431,12 +458,7 @@ TEST(IntegerGridMapParts, LocalUntanglingMovesOnlyTheRegion)
   const Mesh m = load(example_data + "/cube.off", 0.0001);
   const std::size_t nt = m.number_of_tetrahedra(), nv = m.number_of_vertices();
   const HR::internal::Map_geometry geometry = HR::internal::compute_map_geometry(m);
-  std::vector<Eigen::Triplet<double> > tr;
-  for(std::size_t t = 0; t < nt; ++t)
-    for(int c = 0; c < 4; ++c)
-      for(int r = 0; r < 3; ++r) tr.emplace_back(int(12 * t + 3 * c + r), int(3 * m.tetrahedron_vertices(Index(t))[c] + r), 1.0);
-  Eigen::SparseMatrix<double, Eigen::RowMajor> P(Eigen::Index(12 * nt), Eigen::Index(3 * nv));
-  P.setFromTriplets(tr.begin(), tr.end());
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> P = identity_corner_map(m);
   const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(Eigen::Index(12 * nt));
   const double s = 10; // parameter units per model unit
   Eigen::VectorXd y(Eigen::Index(3 * nv));
@@ -453,17 +475,7 @@ TEST(IntegerGridMapParts, LocalUntanglingMovesOnlyTheRegion)
   const Index other = m.edge_vertices(m.vertex_edges(moved)[0])[0] == moved ? m.edge_vertices(m.vertex_edges(moved)[0])[1]
                                                                          : m.edge_vertices(m.vertex_edges(moved)[0])[0];
   for(int r = 0; r < 3; ++r) y[3 * moved + r] += 1.5 * (y[3 * other + r] - y[3 * moved + r]);
-  auto inverted = [&](const Eigen::VectorXd& yy) {
-    const Eigen::VectorXd x = P * yy + x0;
-    std::size_t n = 0;
-    for(std::size_t t = 0; t < nt; ++t) {
-      K::Point_3 q[4];
-      for(int c = 0; c < 4; ++c) q[c] = K::Point_3(x[12 * t + 3 * c], x[12 * t + 3 * c + 1], x[12 * t + 3 * c + 2]);
-      // the mesh's own tets are positively oriented in space, so the identity map's are too
-      n += CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE;
-    }
-    return n;
-  };
+  auto inverted = [&](const Eigen::VectorXd& yy) { return not_positive_tetrahedra(P * yy + x0); };
   ASSERT_GT(inverted(y), 0u);
   const std::vector<char> flat(nt, 0), integer(std::size_t(3 * nv), 0);
   const std::vector<Eigen::Matrix3d> frames(nt, Eigen::Matrix3d::Identity());
@@ -537,12 +549,7 @@ TEST(IntegerGridMapParts, ContinuationReachesTheIntegerValuesWithoutFolding)
   const Mesh m = load(example_data + "/cube.off", 0.001);
   const std::size_t nt = m.number_of_tetrahedra(), nv = m.number_of_vertices();
   const HR::internal::Map_geometry geometry = HR::internal::compute_map_geometry(m);
-  std::vector<Eigen::Triplet<double> > tr;
-  for(std::size_t t = 0; t < nt; ++t)
-    for(int c = 0; c < 4; ++c)
-      for(int r = 0; r < 3; ++r) tr.emplace_back(int(12 * t + 3 * c + r), int(3 * m.tetrahedron_vertices(Index(t))[c] + r), 1.0);
-  Eigen::SparseMatrix<double, Eigen::RowMajor> P(Eigen::Index(12 * nt), Eigen::Index(3 * nv));
-  P.setFromTriplets(tr.begin(), tr.end());
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> P = identity_corner_map(m);
   const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(Eigen::Index(12 * nt));
   const double s = 10;
   const double pi = 3.14159265358979323846;
@@ -579,13 +586,7 @@ TEST(IntegerGridMapParts, ContinuationReachesTheIntegerValuesWithoutFolding)
   for(Eigen::Index j = 0; j < y.size(); ++j)
     if(integer[std::size_t(j)]) ASSERT_EQ(y[j], target[j]) << j;
   const Eigen::VectorXd x = P * y + x0;
-  std::size_t not_positive = 0;
-  for(std::size_t t = 0; t < nt; ++t) {
-    K::Point_3 q[4];
-    for(int k = 0; k < 4; ++k) q[k] = K::Point_3(x[12 * t + 3 * k], x[12 * t + 3 * k + 1], x[12 * t + 3 * k + 2]);
-    not_positive += CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE;
-  }
-  EXPECT_EQ(not_positive, 0u);
+  EXPECT_EQ(not_positive_tetrahedra(x), 0u);
   EXPECT_EQ(HR::internal::count_branched_edges(m, x), 0u);
 }
 
