@@ -232,7 +232,8 @@ struct Integer_grid_map_complex
 /// branch, and the seamless map folds nowhere (the structurally flat tetrahedra left out), the seamless
 /// map is moved to the quantized integer values in steps: along the
 /// linear response to the change of the integer values, each step halved until no tetrahedron folds, then
-/// relaxed by the foldover-free energy's barrier. When the quantizer kept values other than the motorcycle
+/// relaxed by the foldover-free energy's barrier where the map is thin (det J below a tenth of the
+/// target's, and two rings around). When the quantizer kept values other than the motorcycle
 /// complex's program's lengths (their linear map folded more), those lengths, which admit a valid map
 /// (QGP3D), are the first target and the quantized values the second. The angle sum around an edge changes only when a tetrahedron of its ring
 /// goes through zero volume, so the map reached turns around every edge as the seamless map does, which the

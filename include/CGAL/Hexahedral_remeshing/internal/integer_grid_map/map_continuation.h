@@ -11,8 +11,8 @@
 // so a map moved from the seamless one (every edge turning as its holonomy says) without ever folding
 // keeps every turn right. The integer values are reached in steps: each step moves the map along the
 // linear response to the change of the integer values, is halved until no tetrahedron folds, and the
-// map is then relaxed by the foldover-free energy's barrier (which never inverts a tetrahedron), which
-// makes room for the next step. Integer values that collapse a block cannot be reached: the steps
+// map is then relaxed by the foldover-free energy's barrier (which never inverts a tetrahedron) where it is
+// thin, which makes room for the next step. Integer values that collapse a block cannot be reached: the steps
 // shrink below 1/4096 of the way and the continuation stops.
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_CONTINUATION_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MAP_CONTINUATION_H
@@ -96,6 +96,20 @@ Map_continuation continuation_needed(const Tetrahedral_mesh_3<Traits>& mesh, con
   return r;
 }
 
+// One outer iteration of the foldover-free barrier on the tetrahedra of `y`'s map whose det J is below a
+// tenth of the target's (s^3) and two rings around them, which makes room for the next step where the
+// map is about to fold; none if no tetrahedron is that thin, all if they reach a quarter of the mesh.
+template <class Traits>
+void relax_near_folds(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, Eigen::VectorXd& y)
+{
+  const std::vector<char> region =
+    untangling_region(mesh, in.geometry, in.P * y + in.x0, in.flat, 2, 0.1 * in.s * in.s * in.s);
+  const std::size_t size = std::size_t(std::count(region.begin(), region.end(), char(1)));
+  if(size == 0) return;
+  const bool local = size <= region.size() / 4;
+  untangle_map(in.geometry, in.frames, in.s, in.P, in.x0, in.integer_column, in.flat, y, local ? &region : nullptr, true);
+}
+
 // Moves the seamless map `seamless_y` (no fold outside `in.flat`) to the integer values of `target`
 // without folding; the map reached replaces `y` if it neither folds nor branches (`r.kept`). `H`, `rhs`:
 // the unstiffened system; `solver` keeps that system, with the integer variables fixed at `y`'s values.
@@ -128,7 +142,7 @@ void continue_from_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const Fo
       Eigen::VectorXd trial = z + (next - t) * direction;
       for(Eigen::Index j : integer) trial[j] = next == 1. ? target[j] : seamless_y[j] + next * (target[j] - seamless_y[j]);
       if(folds(trial) > 0) { step /= 2; ++r.halvings; continue; }
-      untangle_map(in.geometry, in.frames, in.s, in.P, in.x0, in.integer_column, in.flat, trial, nullptr, true);
+      relax_near_folds(mesh, in, trial);
       z = trial;
       t = next;
       ++steps;

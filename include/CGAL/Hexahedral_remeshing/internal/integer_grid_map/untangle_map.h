@@ -34,8 +34,8 @@ struct Map_untangling_result
 // tetrahedron), only the continuous variables of the region's tetrahedra move, and the energy is that
 // of the tetrahedra they reach (the others keep their map). The result is kept only if it has fewer
 // inverted tetrahedra. With `relax`, a map without inverted tetrahedra is optimized by the barrier (which
-// never inverts one) for one outer iteration instead (the flange's continuation: 7.5 s for its 18 steps,
-// 13 s with two), and kept if it still has none.
+// never inverts one) for one outer iteration instead (the flange's continuation, the whole map relaxed at
+// each step: 7.5 s for its 18 steps, 13 s with two), and kept if it still has none.
 inline Map_untangling_result untangle_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames,
                                           double s, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
                                           const Eigen::VectorXd& x0, const std::vector<char>& integer,
@@ -120,16 +120,16 @@ inline Map_untangling_result untangle_map(const Map_geometry& geometry, const st
   return r;
 }
 
-// The tetrahedra within `rings` rings (through shared vertices) of those with det J <= 0 that are not
-// structurally flat: where a local untangling moves the map.
+// The tetrahedra within `rings` rings (through shared vertices) of those with det J <= `below` that are
+// not structurally flat: where a local untangling (`below` = 0) or relaxation moves the map.
 template <class Traits>
 std::vector<char> untangling_region(const Tetrahedral_mesh_3<Traits>& mesh, const Map_geometry& geometry,
-                                    const Eigen::VectorXd& x, const std::vector<char>& flat, int rings)
+                                    const Eigen::VectorXd& x, const std::vector<char>& flat, int rings, double below = 0)
 {
   const std::size_t nt = geometry.volumes.size();
   std::vector<char> region(nt, 0), marked(mesh.number_of_vertices(), 0);
   for(std::size_t t = 0; t < nt; ++t)
-    region[t] = !flat[t] && !(map_jacobian(geometry, x, t).determinant() > 0);
+    region[t] = !flat[t] && !(map_jacobian(geometry, x, t).determinant() > below);
   for(int ring = 0; ring < rings; ++ring) {
     for(std::size_t t = 0; t < nt; ++t)
       if(region[t])
