@@ -6,6 +6,7 @@
 
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/exact_map_mesh.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <utility>
@@ -100,14 +101,18 @@ struct Curve_edges
 
 inline Curve_edges curve_edges(const Exact_map_mesh& mesh)
 {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> edges;
+  // every edge once, with a tetrahedron having it
+  std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::size_t> > edges;
+  edges.reserve(6 * mesh.tetrahedra.size());
   for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j) {
         std::uint32_t a = mesh.tetrahedra[t].vertex[std::size_t(i)], b = mesh.tetrahedra[t].vertex[std::size_t(j)];
         if(a > b) std::swap(a, b);
-        edges.emplace(std::make_pair(a, b), t);
+        edges.emplace_back(std::make_pair(a, b), t);
       }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end(), [](const auto& p, const auto& q) { return p.first == q.first; }), edges.end());
   Curve_edges curves;
   for(const auto& e : edges) {
     const std::array<std::uint32_t, 2> xy{{e.first.first, e.first.second}};

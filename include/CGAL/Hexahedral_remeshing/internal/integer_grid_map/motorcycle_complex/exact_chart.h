@@ -111,9 +111,11 @@ struct Chart_transition
     }
     return c;
   }
+  bool is_identity() const { return R.is_identity() && CGAL::is_zero(t[0]) && CGAL::is_zero(t[1]) && CGAL::is_zero(t[2]); }
   // this, then `next`
   Chart_transition then(const Chart_transition& next) const
   {
+    if(next.is_identity()) return *this;
     Chart_transition c;
     for(std::size_t i = 0; i < 3; ++i) {
       const std::size_t j = std::size_t(next.R.axis[i]);
@@ -130,6 +132,8 @@ struct Chart_transition
 // points are collinear in parameter space).
 inline bool transition_between(const std::array<Parameter, 3>& from, const std::array<Parameter, 3>& to, Chart_transition& out)
 {
+  // most faces are not on the cut: the same parameters on both sides
+  if(from == to) { out = Chart_transition(); return true; }
   // the rotation that the edge vectors suggest in floating point first, then all of them
   std::array<std::array<double, 3>, 2> d, e;
   for(std::size_t k = 0; k < 2; ++k)

@@ -8,6 +8,8 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/complex_elements.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/motorcycle_complex/trace_walls.h>
 
+#include <CGAL/Interval_nt.h>
+
 #include <chrono>
 #include <memory>
 #include <string>
@@ -47,9 +49,21 @@ inline Block_extents block_extents(const Exact_map_mesh& mesh, const Complex_ele
   return Block_extent_reader(mesh, elements, forms, tets, parameters, wall_planes, mesh.singular_edges).read();
 }
 
-// Exact orientation of tetrahedron t in its chart.
+// Exact orientation of tetrahedron t in its chart: in interval arithmetic first, exactly where the
+// intervals cannot tell.
 inline CGAL::Sign parameter_orientation(const Map_tetrahedron& T)
 {
+  {
+    typedef CGAL::Interval_nt<> Interval;
+    std::array<std::array<Interval, 3>, 3> d;
+    for(std::size_t i = 0; i < 3; ++i)
+      for(std::size_t k = 0; k < 3; ++k)
+        d[i][k] = Interval(CGAL::to_interval(T.parameter[i + 1][k])) - Interval(CGAL::to_interval(T.parameter[0][k]));
+    const Interval det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+                         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+    const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(det);
+    if(CGAL::is_certain(sign)) return CGAL::get_certain(sign);
+  }
   std::array<std::array<Rational, 3>, 3> d;
   for(std::size_t i = 0; i < 3; ++i)
     for(std::size_t k = 0; k < 3; ++k) d[i][k] = T.parameter[i + 1][k] - T.parameter[0][k];
