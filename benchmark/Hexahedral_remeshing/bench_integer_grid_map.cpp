@@ -2,8 +2,9 @@
 // runs), with the map's stages and peak memory; "complex": tracing the motorcycle complex of the
 // seamless map when it is injective (the map traces it only where the rounded map folds), with its
 // blocks and the tetrahedra after the walls' splits.
-//   bench_integer_grid_map [--runs N] [--target-edge-length H] FILE...
-//   (default: mambo/B0 and hexme/i01c_m1 of ../shared/data)
+//   bench_integer_grid_map [--runs N] [--target-edge-length H] [--mesh-size S] FILE...
+//   (default: mambo/B0 and hexme/i01c_m1 of ../shared/data; --mesh-size: gmsh's element size for CAD
+//   parts, e.g. the flange of make_parts.py at 1.7 for about 100,000 tetrahedra)
 // Meshes are built with split_boundary_chords(true), as hexmesh does.
 #include <CGAL/Hexahedral_remeshing/IO/read_tetrahedral_mesh.h>
 #include <CGAL/Hexahedral_remeshing/frame_field_pipeline.h>
@@ -41,7 +42,8 @@ struct Stage_timer : HR::Integer_grid_map_visitor
   void end_stage(const std::string& stage, double s) { seconds[stage] += s; } // the untangling may run twice
 };
 
-const std::vector<std::string> stages = {"cut", "reduction", "elimination", "seamless_map", "rounding", "stiffening", "untangling", "sanitizing"};
+const std::vector<std::string> stages = {"cut", "reduction", "elimination", "seamless_map", "rounding", "stiffening", "untangling",
+                                         "continuation", "sanitizing"};
 
 void run(const std::string& name, const Mesh& mesh, int runs, double h)
 {
@@ -92,12 +94,13 @@ void run(const std::string& name, const Mesh& mesh, int runs, double h)
 int main(int argc, char** argv)
 {
   int runs = 3;
-  double h = 0;
+  double h = 0, mesh_size = 0;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--runs" && i + 1 < argc) runs = std::stoi(argv[++i]);
     else if(a == "--target-edge-length" && i + 1 < argc) h = std::stod(argv[++i]);
+    else if(a == "--mesh-size" && i + 1 < argc) mesh_size = std::stod(argv[++i]);
     else files.push_back(a);
   }
   if(files.empty()) {
@@ -113,7 +116,8 @@ int main(int argc, char** argv)
   for(const std::string& f : files) {
     Mesh mesh;
     try {
-      HR::IO::read_tetrahedral_mesh(f, mesh, HR::parameters::split_boundary_chords(true));
+      if(mesh_size > 0) HR::IO::read_tetrahedral_mesh(f, mesh, HR::parameters::split_boundary_chords(true).mesh_size(mesh_size));
+      else HR::IO::read_tetrahedral_mesh(f, mesh, HR::parameters::split_boundary_chords(true));
     } catch(const HR::Error& e) {
       std::cerr << e.what() << "\n";
       return 1;
