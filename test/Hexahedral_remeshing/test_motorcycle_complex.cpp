@@ -489,3 +489,56 @@ TEST(MotorcycleComplex, ToroidalBlockIsOneBlockWithClosedArcs)
   EXPECT_EQ(extent[1], 1.0);
   EXPECT_EQ(extent[2], 1.0);
 }
+
+namespace {
+
+// The sign of det[p1 - p0, p2 - p0, p3 - p0], by rational arithmetic in the test.
+CGAL::Sign exact_orientation(const std::array<MC::Parameter, 4>& p)
+{
+  MC::Rational d[3][3];
+  for(int i = 0; i < 3; ++i)
+    for(int k = 0; k < 3; ++k) d[i][k] = p[std::size_t(i + 1)][std::size_t(k)] - p[0][std::size_t(k)];
+  const MC::Rational det = d[0][0] * d[1][1] * d[2][2] + d[0][1] * d[1][2] * d[2][0] + d[0][2] * d[1][0] * d[2][1] -
+                           d[0][2] * d[1][1] * d[2][0] - d[0][0] * d[1][2] * d[2][1] - d[0][1] * d[1][0] * d[2][2];
+  return CGAL::sign(det);
+}
+
+MC::Map_tetrahedron tetrahedron(const std::array<MC::Parameter, 4>& p)
+{
+  MC::Map_tetrahedron T;
+  T.vertex = {{0, 1, 2, 3}};
+  T.parameter = p;
+  return T;
+}
+
+} // namespace
+
+// The orientation of a tetrahedron in parameter space is filtered by interval arithmetic: where the
+// intervals cannot tell (a determinant of -2^-104 from entries near 1, whose products round), where a
+// coordinate is not a double (1/3), and on a flat tetrahedron, it must still be the exact sign.
+TEST(MotorcycleComplex, OrientationIsExactWhereIntervalsCannotTell)
+{
+  const double u = std::ldexp(1.0, -52);
+  const MC::Parameter o = MC::exact_parameter(0, 0, 0);
+  // rows (1 + u, 1, 0), (1, 1 - u, 0), (0, 0, 1): det = (1 + u)(1 - u) - 1 = -u^2
+  const std::array<MC::Parameter, 4> close{{o, MC::exact_parameter(1 + u, 1, 0), MC::exact_parameter(1, 1 - u, 0), MC::exact_parameter(0, 0, 1)}};
+  EXPECT_EQ(exact_orientation(close), CGAL::NEGATIVE);
+  EXPECT_EQ(MC::parameter_orientation(tetrahedron(close)), CGAL::NEGATIVE);
+  std::array<MC::Parameter, 4> swapped = close;
+  std::swap(swapped[1], swapped[2]);
+  EXPECT_EQ(MC::parameter_orientation(tetrahedron(swapped)), CGAL::POSITIVE);
+  // a third, and a point on the plane of the other three (flat)
+  const MC::Rational third(1, 3);
+  std::array<MC::Parameter, 4> thirds{{o, MC::Parameter{{third, 0, 0}}, MC::Parameter{{0, third, 0}}, MC::Parameter{{0, 0, third}}}};
+  EXPECT_EQ(exact_orientation(thirds), CGAL::POSITIVE);
+  EXPECT_EQ(MC::parameter_orientation(tetrahedron(thirds)), CGAL::POSITIVE);
+  thirds[3] = MC::Parameter{{third, third, 0}};
+  EXPECT_EQ(exact_orientation(thirds), CGAL::ZERO);
+  EXPECT_EQ(MC::parameter_orientation(tetrahedron(thirds)), CGAL::ZERO);
+  // 2^-200 above that plane: positive
+  MC::Rational epsilon(1);
+  for(int i = 0; i < 200; ++i) epsilon = epsilon / 2;
+  thirds[3][2] = epsilon;
+  EXPECT_EQ(exact_orientation(thirds), CGAL::POSITIVE);
+  EXPECT_EQ(MC::parameter_orientation(tetrahedron(thirds)), CGAL::POSITIVE);
+}

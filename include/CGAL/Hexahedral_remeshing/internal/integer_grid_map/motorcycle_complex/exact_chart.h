@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_MOTORCYCLE_COMPLEX_EXACT_CHART_H
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
 
 #include <gmp.h>
 
@@ -161,6 +162,16 @@ inline bool transition_between(const std::array<Parameter, 3>& from, const std::
     if(ok) { out = c; return true; }
   }
   return false;
+}
+
+// x as an interval: the double itself when x is one (the map's parameters and the split points, rounded
+// to 2^-40, are dyadic with few significant bits), else the interval that rounding gives (slower).
+inline CGAL::Interval_nt<> interval_of(const Rational& x)
+{
+  const mpq_srcptr q = x.mpq();
+  if(mpz_sizeinbase(mpq_numref(q), 2) <= 53 && mpz_popcount(mpq_denref(q)) == 1 && mpz_sizeinbase(mpq_denref(q), 2) <= 960)
+    return CGAL::Interval_nt<>(mpq_get_d(q));
+  return CGAL::Interval_nt<>(CGAL::to_interval(x));
 }
 
 // The plane p[axis] == value of one chart.

@@ -110,6 +110,12 @@ public:
     const Map_tetrahedron& T = tetrahedra[t];
     const std::size_t n = std::size_t(T.neighbor[std::size_t(f)]);
     if(tetrahedra[n].origin == T.origin) return &identity;
+    // most faces are not on the cut: the same parameters on both sides (checked in place: copying
+    // the parameters out costs more than the check)
+    bool same = true;
+    for(int i = 0; i < 4 && same; ++i)
+      same = i == f || T.parameter[std::size_t(i)] == tetrahedra[n].parameter[std::size_t(corner(n, T.vertex[std::size_t(i)]))];
+    if(same) return &identity;
     const std::uint64_t key = (std::uint64_t(T.origin) << 32) | tetrahedra[n].origin;
     auto it = m_transitions.find(key);
     if(it == m_transitions.end()) {

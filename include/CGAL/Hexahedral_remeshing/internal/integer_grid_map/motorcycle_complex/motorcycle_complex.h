@@ -58,7 +58,7 @@ inline CGAL::Sign parameter_orientation(const Map_tetrahedron& T)
     std::array<std::array<Interval, 3>, 3> d;
     for(std::size_t i = 0; i < 3; ++i)
       for(std::size_t k = 0; k < 3; ++k)
-        d[i][k] = Interval(CGAL::to_interval(T.parameter[i + 1][k])) - Interval(CGAL::to_interval(T.parameter[0][k]));
+        d[i][k] = interval_of(T.parameter[i + 1][k]) - interval_of(T.parameter[0][k]);
     const Interval det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
                          d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
     const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(det);
