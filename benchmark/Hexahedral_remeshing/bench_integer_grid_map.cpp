@@ -116,7 +116,7 @@ int main(int argc, char** argv)
   for(const std::string& f : files) {
     Mesh mesh;
     try {
-      if(mesh_size > 0) HR::IO::read_tetrahedral_mesh(f, mesh, HR::parameters::split_boundary_chords(true).mesh_size(mesh_size));
+      if(mesh_size > 0) HR::IO::read_tetrahedral_mesh(f, mesh, HR::parameters::split_boundary_chords(true, HR::parameters::mesh_size(mesh_size)));
       else HR::IO::read_tetrahedral_mesh(f, mesh, HR::parameters::split_boundary_chords(true));
     } catch(const HR::Error& e) {
       std::cerr << e.what() << "\n";
