@@ -133,8 +133,6 @@ struct Chart_transition
 // points are collinear in parameter space).
 inline bool transition_between(const std::array<Parameter, 3>& from, const std::array<Parameter, 3>& to, Chart_transition& out)
 {
-  // most faces are not on the cut: the same parameters on both sides
-  if(from == to) { out = Chart_transition(); return true; }
   // the rotation that the edge vectors suggest in floating point first, then all of them
   std::array<std::array<double, 3>, 2> d, e;
   for(std::size_t k = 0; k < 2; ++k)
