@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Industrial-style CAD parts (OpenCASCADE .brep) for judging the hex-remeshing pipeline.
 
-The models of ../shared/data are mostly smooth or academic shapes; these seven parts are the
+The models of ../shared/data are mostly smooth or academic shapes; these thirteen parts are the
 kind a mechanical engineer sends: brackets with holes, bosses with blind holes, ribs, thin
 walls, fillets, chamfers and an acute (30 degree) edge. Each is a single closed solid of
 modest size (tens of mm), so that hexmesh's default target (~2,000 hexahedra) is reasonable.
@@ -13,6 +13,12 @@ modest size (tens of mm), so that hexmesh's default target (~2,000 hexahedra) is
   filleted_block   box with a step, the step's two edges (concave and convex) filleted
   flange           disk with a central hub (bored through) and 4 bolt holes
   chamfer_wedge    box with one chamfered edge and a wedge cut leaving a 30 degree edge
+  pillow_block     base with two bolt holes, a web and a bored bearing housing across it
+  pipe_tee         two tubes fused at right angles (saddle-shaped intersection curves)
+  gusset_bracket   L-bracket stiffened by a triangular gusset
+  stepped_shaft    three coaxial cylinders with a groove
+  clevis           block with a slot and a pin hole through both cheeks
+  pocket_housing   box with a rectangular pocket and a round boss on the pocket's floor
 
 Needs gmsh's Python module with OpenCASCADE (Debian's python3-gmsh: run with /usr/bin/python3).
 
@@ -139,7 +145,71 @@ def chamfer_wedge():
     cut(v, *tool)
 
 
-PARTS = [bracket_l_hole, plate_boss, ribbed_plate, thin_channel, filleted_block, flange, chamfer_wedge]
+def pillow_block():
+    # base 80 x 30 x 10 with two bolt holes, a bearing housing (outer radius 18) bored (radius 10) along y
+    base = occ.addBox(0, 0, 0, 80, 30, 10)
+    housing = occ.addCylinder(40, 0, 22, 0, 30, 0, 18)
+    web = occ.addBox(22, 0, 10, 36, 30, 12)
+    (v,) = fuse(base, housing, web)
+    bore = occ.addCylinder(40, -1, 22, 0, 32, 0, 10)
+    holes = [occ.addCylinder(x, 15, -1, 0, 0, 12, 4) for x in (10., 70.)]
+    cut(v, bore, *holes)
+
+
+def pipe_tee():
+    # two tubes (outer radius 12, wall 3) fused at right angles: saddle-shaped intersection curves
+    run = occ.addCylinder(-40, 0, 0, 80, 0, 0, 12)
+    branch = occ.addCylinder(0, 0, 0, 0, 0, 35, 12)
+    (v,) = fuse(run, branch)
+    run_bore = occ.addCylinder(-41, 0, 0, 82, 0, 0, 9)
+    branch_bore = occ.addCylinder(0, 0, 0, 0, 0, 36, 9)
+    cut(v, run_bore, branch_bore)
+
+
+def gusset_bracket():
+    # L-bracket (thickness 8) stiffened by a triangular gusset (thickness 6) in its middle
+    L, W, T, g = 60., 40., 8., 6.
+    base = occ.addBox(0, 0, 0, L, W, T)
+    leg = occ.addBox(0, 0, 0, T, W, L)
+    pts = [(T, T), (L - 10, T), (T, L - 10)]
+    p = [occ.addPoint(x, (W - g) / 2, z) for x, z in pts]
+    lines = [occ.addLine(p[i], p[(i + 1) % 3]) for i in range(3)]
+    surf = occ.addPlaneSurface([occ.addCurveLoop(lines)])
+    gusset = [t for d, t in occ.extrude([(2, surf)], 0, g, 0) if d == 3]
+    fuse(base, leg, *gusset)
+
+
+def stepped_shaft():
+    # three coaxial cylinders (radii 10, 15, 8), a groove (depth 1.5, width 3) on the thinnest
+    a = occ.addCylinder(0, 0, 0, 30, 0, 0, 10)
+    b = occ.addCylinder(30, 0, 0, 25, 0, 0, 15)
+    c = occ.addCylinder(55, 0, 0, 35, 0, 0, 8)
+    (v,) = fuse(a, b, c)
+    groove = occ.addCylinder(70, 0, 0, 3, 0, 0, 9)
+    inner = occ.addCylinder(69, 0, 0, 5, 0, 0, 6.5)
+    (ring,) = cut(groove, inner)
+    cut(v, ring)
+
+
+def clevis():
+    # block 40 x 30 x 30 with a slot 10 wide and 20 deep, and a cross pin hole through both cheeks
+    block = occ.addBox(0, 0, 0, 40, 30, 30)
+    slot = occ.addBox(-1, 10, 10, 42, 10, 21)
+    pin = occ.addCylinder(25, -1, 20, 0, 32, 0, 4)
+    cut(block, slot, pin)
+
+
+def pocket_housing():
+    # box 70 x 50 x 30 with a rectangular pocket (walls 5, floor 6) and a round boss on the floor
+    box = occ.addBox(0, 0, 0, 70, 50, 30)
+    pocket = occ.addBox(5, 5, 6, 60, 40, 25)
+    (v,) = cut(box, pocket)
+    boss = occ.addCylinder(35, 25, 6, 0, 0, 12, 7)
+    fuse(v, boss)
+
+
+PARTS = [bracket_l_hole, plate_boss, ribbed_plate, thin_channel, filleted_block, flange, chamfer_wedge,
+         pillow_block, pipe_tee, gusset_bracket, stepped_shaft, clevis, pocket_housing]
 
 
 def main():
