@@ -194,6 +194,12 @@ TEST(Valences, HeuristicsOnConstructedEdges)
     {"220.6", at_degrees(220.6), 220.6, 2, 2, 3, 2},
     {"310.4", at_degrees(310.4), 310.4, 3, 3, 3, 2},
     {"310.6", at_degrees(310.6), 310.6, 3, 3, 4, 2},
+    // within pi/8192 (0.022 degrees) below a tie: a tie for every heuristic but the geometric one
+    {"134.99", at_degrees(134.99), 134.99, 1, 2, 2, 2},
+    {"224.99", at_degrees(224.99), 224.99, 2, 3, 3, 2},
+    {"314.99", at_degrees(314.99), 314.99, 3, 4, 4, 2},
+    {"134.97", at_degrees(134.97), 134.97, 1, 1, 2, 1},   // 0.03 below: not a tie
+    {"224.97", at_degrees(224.97), 224.97, 2, 2, 3, 2},
   };
   for(const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -277,6 +283,72 @@ TEST(Valences, AmbiguousThresholdIsExact)
     const Point b = at_degrees(deg);
     const std::array<double, 12> xyz = {0, 0, 1, 0, 0, 0, 1, 0, 0, b.x(), b.y(), 0.5};
     EXPECT_EQ(HR::internal::ambiguous_dihedral_class_exact(xyz), int(std::floor(deg / 90 + 0.55))) << deg;
+  }
+}
+
+// A CAD angle of 45, 135, 225 or 315 degrees whose points are rounded to doubles lands on either
+// side of the exact tie: the exact classes differ edge by edge (both sides are reached below), and
+// the class the heuristics use (near ties rounded up) is the tie's on every one of them.
+TEST(Valences, RoundedTiesTakeTheTiesClass)
+{
+  for(int m = 0; m < 4; ++m) {
+    SCOPED_TRACE(m);
+    std::set<int> exact;
+    for(int step = -20; step <= 20; ++step) {
+      // the edge's second face turned about the edge by a tiny angle around the tie, then rounded
+      const double r = (90.0 * m + 45.0) * CGAL_PI / 180 + step * 1e-15;
+      const std::array<double, 12> xyz = {0, 0, 1, 0, 0, 0, 1, 0, 0, std::cos(r), std::sin(r), 0.5};
+      exact.insert(HR::internal::dihedral_class_exact(xyz));
+      EXPECT_EQ(HR::internal::near_tie_dihedral_class_exact(xyz), m + 1) << step;
+    }
+    EXPECT_EQ(exact, (std::set<int>{m, m + 1}));
+  }
+  // on a mesh: the public class of an edge 0.01 degrees below 135
+  const Fan fan = make_fan(at_degrees(134.99), 134.99);
+  EXPECT_EQ(HR::boundary_edge_dihedral_class(fan.mesh, fan.edge), 1);
+  EXPECT_EQ(HR::boundary_edge_near_tie_class(fan.mesh, fan.edge), 2);
+}
+
+// The near-tie thresholds m pi/2 + 2047 pi/8192, decided exactly: against an MPFR oracle on points
+// within a few ulps of them (where the interval filter fails) and on a grid of angles.
+TEST(Valences, NearTieThresholdIsExact)
+{
+  auto oracle = [](double x, double y) {
+    mpfr_t phi, t, pi;
+    mpfr_inits2(256, phi, t, pi, (mpfr_ptr)0);
+    mpfr_set_d(t, x, MPFR_RNDN);
+    mpfr_set_d(phi, y, MPFR_RNDN);
+    mpfr_atan2(phi, phi, t, MPFR_RNDN);
+    mpfr_const_pi(pi, MPFR_RNDN);
+    if(mpfr_sgn(phi) < 0) { mpfr_mul_ui(t, pi, 2, MPFR_RNDN); mpfr_add(phi, phi, t, MPFR_RNDN); }
+    // the class is m + 1 from phi = m pi/2 + 2047 pi/8192 on: floor(2 phi/pi + 2049/4096)
+    // = floor(floor(8192 phi/pi + 2049) / 4096)
+    mpfr_mul_ui(phi, phi, 8192, MPFR_RNDN);
+    mpfr_div(phi, phi, pi, MPFR_RNDN);
+    mpfr_add_ui(phi, phi, 2049, MPFR_RNDN);
+    mpfr_floor(phi, phi);
+    const long k = mpfr_get_si(phi, MPFR_RNDN);
+    mpfr_clears(phi, t, pi, (mpfr_ptr)0);
+    return int(k / 4096);
+  };
+  std::set<int> classes;
+  for(int m = 0; m < 4; ++m) {
+    const double r = m * CGAL_PI / 2 + 2047 * CGAL_PI / 8192;
+    const double x0 = std::cos(r), y0 = std::sin(r);
+    for(int ulps = -12; ulps <= 12; ++ulps) { // CGAL_PI and the sums round: a few ulps off the threshold
+      double y = y0;
+      for(int u = 0; u < std::abs(ulps); ++u) y = std::nextafter(y, ulps > 0 ? 10.0 : -10.0);
+      const std::array<double, 12> xyz = {0, 0, 1, 0, 0, 0, 1, 0, 0, x0, y, 0.5};
+      const int expected = oracle(x0, y);
+      EXPECT_EQ(HR::internal::near_tie_dihedral_class_exact(xyz), expected) << m << " " << ulps;
+      classes.insert(expected);
+    }
+  }
+  EXPECT_EQ(classes.size(), 5u); // both sides of each threshold
+  for(double deg = 0.25; deg < 360; deg += 0.5) {
+    const Point b = at_degrees(deg);
+    const std::array<double, 12> xyz = {0, 0, 1, 0, 0, 0, 1, 0, 0, b.x(), b.y(), 0.5};
+    EXPECT_EQ(HR::internal::near_tie_dihedral_class_exact(xyz), int(std::floor(deg / 90 + 0.5))) << deg;
   }
 }
 

@@ -255,12 +255,15 @@ TEST(Pipeline, EverySharedModel)
   // boundary edges whose achieved valence differs from the prescribed one although E(v) < pi/4
   const std::map<std::string, std::size_t> known_valence_mismatches = {
     {"i01c_m1", 37}, {"n01c_cross_cyls_sr", 1}, {"n04c_transition_prism", 3}, {"n06c_anti_pentapyr", 1},
-    {"n10c_qtorus_cyl", 2}, {"s08c_cross_cyls_dr", 2}, {"B1_tet", 1}};
+    {"n10c_qtorus_cyl", 2}, {"s08c_cross_cyls_dr", 2}, {"s12c_cube_rounded_1", 1}, {"B1_tet", 1}};
   // interior faces whose matching, recomputed on the realigned field, differs from the kept one
   // (the realigned field turns by more than 45 degrees between two tets of a thin feature wedge)
+  // (s12c: 37 and no valence mismatch, s13c: 12, before their 41 and 38 edges of 135 degrees that the
+  // coordinates' rounding put below the tie got valence 2 like the rest of their curves,
+  // boundary_edge_near_tie_class())
   const std::map<std::string, std::size_t> known_changed_matchings = {
     {"i01c_m1", 2}, {"n04c_transition_prism", 21}, {"n05c_box_min_pcyls", 4}, {"n10c_qtorus_cyl", 9},
-    {"n13c_acute_line", 8}, {"s08c_cross_cyls_dr", 1}, {"s12c_cube_rounded_1", 37}, {"s13c_cube_rounded_2", 12},
+    {"n13c_acute_line", 8}, {"s08c_cross_cyls_dr", 1}, {"s12c_cube_rounded_1", 67}, {"s13c_cube_rounded_2", 19},
     {"B1_tet", 1}, {"B41", 24}};
   // interior edges whose type changes when evaluated on the realigned frames (the matchings are
   // kept, so only the 3/5 sign of edges nearly perpendicular to their holonomy axis can change)

@@ -5,6 +5,7 @@
 #define CGAL_HEXAHEDRAL_REMESHING_BOUNDARY_DIHEDRAL_ANGLES_H
 
 #include <CGAL/Hexahedral_remeshing/Tetrahedral_mesh_3.h>
+#include <CGAL/Hexahedral_remeshing/internal/ambiguous_dihedral_class.h>
 
 #include <array>
 #include <cmath>
@@ -64,6 +65,38 @@ double boundary_edge_dihedral_angle(const Tetrahedral_mesh_3<Traits>& mesh, type
   double phi = CGAL_PI - std::atan2(s, c);
   if(phi >= 2 * CGAL_PI) phi -= 2 * CGAL_PI;
   return phi;
+}
+
+namespace internal {
+
+// The points of `boundary_edge_points()` as the 12 doubles of internal/dihedral_class.h.
+template <class Traits>
+std::array<double, 12> boundary_edge_coordinates(const Tetrahedral_mesh_3<Traits>& mesh,
+                                                 typename Tetrahedral_mesh_3<Traits>::Index e)
+{
+  const auto p = boundary_edge_points(mesh, e);
+  std::array<double, 12> xyz;
+  for(int i = 0; i < 4; ++i)
+    for(int c = 0; c < 3; ++c) xyz[std::size_t(3 * i + c)] = CGAL::to_double(p[std::size_t(i)][c]);
+  return xyz;
+}
+
+} // namespace internal
+
+/// \ingroup PkgHexahedralRemeshingRef
+/// The class `round(2 phi / pi)` of `boundary_edge_dihedral_class()` with the angles within
+/// pi/8192 (0.022 degrees) below an odd multiple of pi/4 rounded up like the exact ties: the class
+/// the valence heuristics other than `GEOMETRIC` start from, and what tells an acute edge (class 0).
+/// A CAD angle of 45, 135, 225 or 315 degrees (a 45-degree chamfer, the toe of a gusset) meshed
+/// with rounded coordinates lands on either side of the exact tie edge by edge; this class gives
+/// the whole curve the valence of the tie. Decided exactly for the coordinates converted to
+/// `double` (exact for the default kernel): an interval filter, then exact rational arithmetic
+/// against MPFR enclosures of the (irrational) threshold, as for the `AMBIGUOUS` heuristic.
+/// \pre `mesh.is_boundary_edge(e)`
+template <class Traits>
+int boundary_edge_near_tie_class(const Tetrahedral_mesh_3<Traits>& mesh, typename Tetrahedral_mesh_3<Traits>::Index e)
+{
+  return internal::near_tie_dihedral_class_exact(internal::boundary_edge_coordinates(mesh, e));
 }
 
 } // namespace Hexahedral_remeshing

@@ -28,7 +28,8 @@ namespace Hexahedral_remeshing {
 /// \ingroup PkgHexahedralRemeshingRef
 /// The heuristics of Desobry et al. (Sec. 5) that choose the valence `k` of a boundary edge (the
 /// number of hexahedra meeting there) from its interior dihedral angle `phi`. `round()` rounds
-/// ties up; every threshold is decided exactly (see `boundary_edge_valence()`).
+/// ties up, and for every heuristic but `GEOMETRIC` the angles within 0.022 degrees below a tie too
+/// (`boundary_edge_near_tie_class()`); every threshold is decided exactly (see `boundary_edge_valence()`).
 enum class Valence_heuristic
 {
   /// `k = round(2 phi / pi)`: what a frame field aligned with the normals produces (may be 0, not meshable).
@@ -82,8 +83,11 @@ inline bool parse_valence_heuristic(std::string name, Valence_heuristic& h)
 /// \ingroup PkgHexahedralRemeshingRef
 /// Valence that heuristic `h` gives to boundary edge `e`.
 ///
-/// Exactness: the class `round(2 phi / pi)` is decided exactly by the traits' `Dihedral_class_3`
-/// (ties at odd multiples of pi/4 round up). The `AMBIGUOUS` threshold `round(2 phi / pi + 0.05)`,
+/// Exactness: the class `round(2 phi / pi)` of `GEOMETRIC` is decided exactly by the traits'
+/// `Dihedral_class_3` (ties at odd multiples of pi/4 round up); `LOW_ANGLE` and `CAP_TWO` start from
+/// `boundary_edge_near_tie_class()`, which rounds up the angles within pi/8192 below a tie as well
+/// (a CAD chamfer of 45 degrees meshed with rounded coordinates: one valence along it, not the two
+/// that the exact sides of the tie give edge by edge). The `AMBIGUOUS` threshold `round(2 phi / pi + 0.05)`,
 /// i.e. `phi >= (m + 0.45) pi / 2`, is decided exactly too, for the coordinates of the points
 /// converted to `double` (exact for the default kernel): an interval filter, then exact rational
 /// arithmetic against enclosures of `tan^2(0.45 pi / 2)` computed with MPFR at increasing
@@ -94,14 +98,10 @@ template <class Traits>
 int boundary_edge_valence(const Tetrahedral_mesh_3<Traits>& mesh, typename Tetrahedral_mesh_3<Traits>::Index e,
                           Valence_heuristic h, const Traits& traits = Traits())
 {
-  if(h == Valence_heuristic::AMBIGUOUS) {
-    const auto p = boundary_edge_points(mesh, e);
-    std::array<double, 12> xyz;
-    for(int i = 0; i < 4; ++i)
-      for(int c = 0; c < 3; ++c) xyz[std::size_t(3 * i + c)] = CGAL::to_double(p[std::size_t(i)][c]);
-    return (std::max)(internal::ambiguous_dihedral_class_exact(xyz), 1);
-  }
-  const int m = boundary_edge_dihedral_class(mesh, e, traits);
+  if(h == Valence_heuristic::AMBIGUOUS)
+    return (std::max)(internal::ambiguous_dihedral_class_exact(internal::boundary_edge_coordinates(mesh, e)), 1);
+  const int m = h == Valence_heuristic::GEOMETRIC ? boundary_edge_dihedral_class(mesh, e, traits)
+                                                  : boundary_edge_near_tie_class(mesh, e);
   switch(h) {
   case Valence_heuristic::GEOMETRIC: return m;
   case Valence_heuristic::CAP_TWO: return (std::min)(m, 2);
@@ -270,8 +270,6 @@ compute_boundary_edge_valences(const Tetrahedral_mesh_3<Traits>& mesh, std::vect
     }
     if(k >= 0) ++stats.prescribed_edges;
     else if(heuristic == Valence_heuristic::GEOMETRIC) k = geometric;
-    else if(heuristic == Valence_heuristic::LOW_ANGLE) k = (std::max)(geometric, 1);
-    else if(heuristic == Valence_heuristic::CAP_TWO) k = (std::min)(geometric, 2);
     else k = boundary_edge_valence(mesh, e, heuristic, traits);
     valences[e] = k;
     ++stats.histogram[std::size_t(k)];

@@ -23,12 +23,15 @@ namespace CGAL {
 namespace Hexahedral_remeshing {
 namespace internal {
 
-// Exact class round(2 phi / pi + 0.05) of the "ambiguous" heuristic (Desobry et al., Sec. 5.2).
-//
-// With m = round(2 phi / pi) the exact class of `dihedral_class_exact()` (ties up), write
-// phi = m pi/2 + psi with psi in [-pi/4, pi/4).  Then round(2 phi / pi + 0.05) is m + 1 if
-// psi >= theta0 = 0.45 pi/2 (9 pi/40, 40.5 degrees), and m otherwise: the bias moves the rounding
-// thresholds from (m + 1/2) pi/2 down to (m + 0.45) pi/2.
+// Classes of the dihedral angle phi whose rounding thresholds are moved below the odd multiples of
+// pi/4: with m = round(2 phi / pi) the exact class of `dihedral_class_exact()` (ties up), write
+// phi = m pi/2 + psi with psi in [-pi/4, pi/4); the biased class is m + 1 if psi >= theta0 and m
+// otherwise, for theta0 = N pi / D just below pi/4. Two biases are used:
+//  - the "ambiguous" heuristic (Desobry et al., Sec. 5.2), round(2 phi / pi + 0.05):
+//    theta0 = 0.45 pi/2 = 9 pi/40 (40.5 degrees);
+//  - the near ties, theta0 = 2047 pi/8192 (pi/8192, 0.022 degrees, below pi/4): a CAD angle of 45,
+//    135, 225 or 315 degrees meshed with rounded coordinates lands on either side of the exact tie,
+//    edge by edge, so that one CAD curve (a 45-degree chamfer, the toe of a gusset) got two valences.
 //
 // The test psi >= theta0 is decided exactly for the double coordinates of the four points:
 // with s = <n_i x n_j, e>, c = <n_i, n_j> and e2 = |e|^2 (the polynomials of dihedral_class.h),
@@ -43,33 +46,37 @@ namespace internal {
 // directed rounding at increasing precision, until the enclosure excludes the rational Y^2 / X^2
 // (this terminates because T is irrational).
 
-// Enclosure [lo, hi] of T = tan^2(9 pi / 40) computed with MPFR at `bits` bits, directed rounding:
-// pi is enclosed, then tan is increasing on (0, pi/2) and squaring is increasing on positives.
-inline void ambiguous_threshold_enclosure(mpfr_prec_t bits, mpfr_t lo, mpfr_t hi)
+// Enclosure [lo, hi] of T = tan^2(N pi / D) (0 < N / D < 1/4) computed with MPFR at `bits` bits,
+// directed rounding: pi is enclosed, then tan is increasing on (0, pi/2) and squaring is increasing
+// on positives.
+template <unsigned long N, unsigned long D>
+void class_threshold_enclosure(mpfr_prec_t bits, mpfr_t lo, mpfr_t hi)
 {
+  static_assert(0 < N && 4 * N < D, "the threshold is an angle in (0, pi/4)");
   mpfr_t a;
   mpfr_init2(a, bits);
   mpfr_const_pi(lo, MPFR_RNDD);
-  mpfr_mul_ui(lo, lo, 9, MPFR_RNDD);
-  mpfr_div_ui(lo, lo, 40, MPFR_RNDD);
+  mpfr_mul_ui(lo, lo, N, MPFR_RNDD);
+  mpfr_div_ui(lo, lo, D, MPFR_RNDD);
   mpfr_tan(lo, lo, MPFR_RNDD);
   mpfr_sqr(lo, lo, MPFR_RNDD);
   mpfr_const_pi(a, MPFR_RNDU);
-  mpfr_mul_ui(a, a, 9, MPFR_RNDU);
-  mpfr_div_ui(a, a, 40, MPFR_RNDU);
+  mpfr_mul_ui(a, a, N, MPFR_RNDU);
+  mpfr_div_ui(a, a, D, MPFR_RNDU);
   mpfr_tan(a, a, MPFR_RNDU);
   mpfr_sqr(hi, a, MPFR_RNDU);
   mpfr_clear(a);
 }
 
 // Double enclosure of T, for the interval filter.
-inline const Interval_nt<false>& ambiguous_threshold_interval()
+template <unsigned long N, unsigned long D>
+const Interval_nt<false>& class_threshold_interval()
 {
   static const Interval_nt<false> t = [] {
     mpfr_t lo, hi;
     mpfr_init2(lo, 128);
     mpfr_init2(hi, 128);
-    ambiguous_threshold_enclosure(128, lo, hi);
+    class_threshold_enclosure<N, D>(128, lo, hi);
     const double l = mpfr_get_d(lo, MPFR_RNDD), h = mpfr_get_d(hi, MPFR_RNDU);
     mpfr_clear(lo);
     mpfr_clear(hi);
@@ -90,8 +97,8 @@ template <class Backend, boost::multiprecision::expression_template_option ET>
 mpq_srcptr mpq_of(const boost::multiprecision::number<Backend, ET>& q) { return q.backend().data(); }
 
 // Exact comparison of the rational a / b (b > 0) with T: true if a / b >= T (never equal).
-template <class Rational>
-bool ratio_at_least_ambiguous_threshold(const Rational& a, const Rational& b)
+template <unsigned long N, unsigned long D, class Rational>
+bool ratio_at_least_class_threshold(const Rational& a, const Rational& b)
 {
   mpq_t r;
   mpq_init(r);
@@ -101,7 +108,7 @@ bool ratio_at_least_ambiguous_threshold(const Rational& a, const Rational& b)
     mpfr_t lo, hi;
     mpfr_init2(lo, bits);
     mpfr_init2(hi, bits);
-    ambiguous_threshold_enclosure(bits, lo, hi);
+    class_threshold_enclosure<N, D>(bits, lo, hi);
     const int below_lo = mpfr_cmp_q(lo, r);   // > 0: r < lo
     const int above_hi = mpfr_cmp_q(hi, r);   // < 0: r > hi
     mpfr_clear(lo);
@@ -115,7 +122,7 @@ bool ratio_at_least_ambiguous_threshold(const Rational& a, const Rational& b)
 
 // Y^2 and X^2 of the comment above, and the sign of Y, for class m.
 template <class FT>
-void ambiguous_rotated_squares(const std::array<double, 12>& xyz, int m, FT& y2, FT& x2, Sign& sign_y)
+void biased_rotated_squares(const std::array<double, 12>& xyz, int m, FT& y2, FT& x2, Sign& sign_y)
 {
   FT s, c, e2;
   dihedral_polynomials(xyz, s, c, e2);
@@ -127,18 +134,20 @@ void ambiguous_rotated_squares(const std::array<double, 12>& xyz, int m, FT& y2,
   else { y2 = c * c * e2; x2 = s * s; }
 }
 
-// round(2 phi / pi + 0.05) for the edge described by `xyz` (same layout as dihedral_class_exact()).
-inline int ambiguous_dihedral_class_exact(const std::array<double, 12>& xyz)
+// The class of phi with the thresholds at (m + 1/2) pi/2 moved down to m pi/2 + N pi / D, for the
+// edge described by `xyz` (same layout as dihedral_class_exact()).
+template <unsigned long N, unsigned long D>
+int biased_dihedral_class_exact(const std::array<double, 12>& xyz)
 {
   const int m = dihedral_class_exact(xyz);
-  if(m == 4) return 4; // phi >= 7 pi/4: psi < 0, the bias cannot reach the next class (and 2 phi/pi < 4.05)
-  const Interval_nt<false> threshold = ambiguous_threshold_interval(); // computed outside the rounding-mode change
+  if(m == 4) return 4; // phi >= 7 pi/4: psi < 0, the bias cannot reach the next class
+  const Interval_nt<false> threshold = class_threshold_interval<N, D>(); // computed outside the rounding-mode change
   {
     Protect_FPU_rounding<true> protection;
     try {
       Interval_nt<false> y2, x2;
       Sign sign_y;
-      ambiguous_rotated_squares(xyz, m, y2, x2, sign_y);
+      biased_rotated_squares(xyz, m, y2, x2, sign_y);
       if(sign_y != POSITIVE) return m;
       const Interval_nt<false> d = y2 - threshold * x2;
       return CGAL::sign(d) == NEGATIVE ? m : m + 1; // throws if the sign is uncertain (d is never 0)
@@ -146,9 +155,22 @@ inline int ambiguous_dihedral_class_exact(const std::array<double, 12>& xyz)
   }
   Exact_rational y2, x2;
   Sign sign_y;
-  ambiguous_rotated_squares(xyz, m, y2, x2, sign_y);
+  biased_rotated_squares(xyz, m, y2, x2, sign_y);
   if(sign_y != POSITIVE) return m;
-  return ratio_at_least_ambiguous_threshold(y2, x2) ? m + 1 : m;
+  return ratio_at_least_class_threshold<N, D>(y2, x2) ? m + 1 : m;
+}
+
+// round(2 phi / pi + 0.05), the class of the "ambiguous" heuristic.
+inline int ambiguous_dihedral_class_exact(const std::array<double, 12>& xyz)
+{
+  return biased_dihedral_class_exact<9, 40>(xyz);
+}
+
+// round(2 phi / pi) with the angles within pi/8192 (0.022 degrees) below an odd multiple of pi/4
+// taken as ties, which round up: the class of the valence heuristics other than the geometric one.
+inline int near_tie_dihedral_class_exact(const std::array<double, 12>& xyz)
+{
+  return biased_dihedral_class_exact<2047, 8192>(xyz);
 }
 
 } // namespace internal
