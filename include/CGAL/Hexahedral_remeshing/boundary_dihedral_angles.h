@@ -86,7 +86,7 @@ std::array<double, 12> boundary_edge_coordinates(const Tetrahedral_mesh_3<Traits
 /// \ingroup PkgHexahedralRemeshingRef
 /// The class `round(2 phi / pi)` of `boundary_edge_dihedral_class()` with the angles within
 /// pi/8192 (0.022 degrees) below an odd multiple of pi/4 rounded up like the exact ties: the class
-/// the valence heuristics other than `GEOMETRIC` start from, and what tells an acute edge (class 0).
+/// the valence heuristics other than `GEOMETRIC` start from.
 /// A CAD angle of 45, 135, 225 or 315 degrees (a 45-degree chamfer, the toe of a gusset) meshed
 /// with rounded coordinates lands on either side of the exact tie edge by edge; this class gives
 /// the whole curve the valence of the tie. Decided exactly for the coordinates converted to
