@@ -237,30 +237,34 @@ TEST(Valences, HeuristicNames)
   EXPECT_FALSE(HR::parse_valence_heuristic("round", h));
 }
 
+// floor(floor(mul phi / pi + add) / div) for phi = atan2(y, x) in [0, 2 pi), in 256-bit MPFR: the
+// oracle of the biased class thresholds (integers only besides mul phi / pi).
+int mpfr_biased_class(double x, double y, unsigned long mul, unsigned long add, long div)
+{
+  mpfr_t phi, t, pi;
+  mpfr_inits2(256, phi, t, pi, (mpfr_ptr)0);
+  mpfr_set_d(t, x, MPFR_RNDN);
+  mpfr_set_d(phi, y, MPFR_RNDN);
+  mpfr_atan2(phi, phi, t, MPFR_RNDN);
+  mpfr_const_pi(pi, MPFR_RNDN);
+  if(mpfr_sgn(phi) < 0) { mpfr_mul_ui(t, pi, 2, MPFR_RNDN); mpfr_add(phi, phi, t, MPFR_RNDN); }
+  mpfr_mul_ui(phi, phi, mul, MPFR_RNDN);
+  mpfr_div(phi, phi, pi, MPFR_RNDN);
+  mpfr_add_ui(phi, phi, add, MPFR_RNDN);
+  mpfr_floor(phi, phi);
+  const long k = mpfr_get_si(phi, MPFR_RNDN);
+  mpfr_clears(phi, t, pi, (mpfr_ptr)0);
+  return int(k / div);
+}
+
 // The +0.05 bias of the ambiguous heuristic puts thresholds at (m + 0.45) pi/2, irrational angles.
 // Points within a few ulps of them make the interval filter fail (8 of the 36 below, measured);
 // the exact path must agree with
 // an independent oracle: atan2 of the same doubles in 256-bit MPFR arithmetic.
 TEST(Valences, AmbiguousThresholdIsExact)
 {
-  auto oracle = [](double x, double y) {
-    mpfr_t phi, t, pi;
-    mpfr_inits2(256, phi, t, pi, (mpfr_ptr)0);
-    mpfr_set_d(t, x, MPFR_RNDN);
-    mpfr_set_d(phi, y, MPFR_RNDN);
-    mpfr_atan2(phi, phi, t, MPFR_RNDN);
-    mpfr_const_pi(pi, MPFR_RNDN);
-    if(mpfr_sgn(phi) < 0) { mpfr_mul_ui(t, pi, 2, MPFR_RNDN); mpfr_add(phi, phi, t, MPFR_RNDN); }
-    // round(2 phi/pi + 0.05) = floor(2 phi/pi + 0.55) = floor(floor(40 phi/pi + 11) / 20), with
-    // integers only besides 40 phi / pi (0.55 is not a double)
-    mpfr_mul_ui(phi, phi, 40, MPFR_RNDN);
-    mpfr_div(phi, phi, pi, MPFR_RNDN);
-    mpfr_add_ui(phi, phi, 11, MPFR_RNDN);
-    mpfr_floor(phi, phi);
-    const long k = mpfr_get_si(phi, MPFR_RNDN);
-    mpfr_clears(phi, t, pi, (mpfr_ptr)0);
-    return int(k / 20);
-  };
+  // round(2 phi/pi + 0.05) = floor(2 phi/pi + 0.55) = floor(floor(40 phi/pi + 11) / 20)
+  auto oracle = [](double x, double y) { return mpfr_biased_class(x, y, 40, 11, 20); };
   int checked = 0;
   std::set<int> classes;
   for(double deg : {40.5, 130.5, 220.5, 310.5}) {
@@ -313,24 +317,8 @@ TEST(Valences, RoundedTiesTakeTheTiesClass)
 // within a few ulps of them (where the interval filter fails) and on a grid of angles.
 TEST(Valences, NearTieThresholdIsExact)
 {
-  auto oracle = [](double x, double y) {
-    mpfr_t phi, t, pi;
-    mpfr_inits2(256, phi, t, pi, (mpfr_ptr)0);
-    mpfr_set_d(t, x, MPFR_RNDN);
-    mpfr_set_d(phi, y, MPFR_RNDN);
-    mpfr_atan2(phi, phi, t, MPFR_RNDN);
-    mpfr_const_pi(pi, MPFR_RNDN);
-    if(mpfr_sgn(phi) < 0) { mpfr_mul_ui(t, pi, 2, MPFR_RNDN); mpfr_add(phi, phi, t, MPFR_RNDN); }
-    // the class is m + 1 from phi = m pi/2 + 2047 pi/8192 on: floor(2 phi/pi + 2049/4096)
-    // = floor(floor(8192 phi/pi + 2049) / 4096)
-    mpfr_mul_ui(phi, phi, 8192, MPFR_RNDN);
-    mpfr_div(phi, phi, pi, MPFR_RNDN);
-    mpfr_add_ui(phi, phi, 2049, MPFR_RNDN);
-    mpfr_floor(phi, phi);
-    const long k = mpfr_get_si(phi, MPFR_RNDN);
-    mpfr_clears(phi, t, pi, (mpfr_ptr)0);
-    return int(k / 4096);
-  };
+  // m + 1 from phi = m pi/2 + 2047 pi/8192 on: floor(2 phi/pi + 2049/4096) = floor(floor(8192 phi/pi + 2049) / 4096)
+  auto oracle = [](double x, double y) { return mpfr_biased_class(x, y, 8192, 2049, 4096); };
   std::set<int> classes;
   for(int m = 0; m < 4; ++m) {
     const double r = m * CGAL_PI / 2 + 2047 * CGAL_PI / 8192;
