@@ -12,6 +12,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/greedy_surgery.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/local_matching_search.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/move_singular_edge.h>
+#include <CGAL/Hexahedral_remeshing/internal/singularity_repair/pull_curve_end.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/remove_zigzag.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/simplify_at_hex_scale.h>
 #include <CGAL/Hexahedral_remeshing/internal/singularity_repair/slide_curve_end.h>
@@ -85,6 +86,9 @@ struct Singularity_repair_result
     {"too_large", 0}, {"collar_not_flat", 0}, {"not_editable", 0}, {"boundary_valence", 0}, {"not_cheaper", 0}};
   /// Changes of `"sweep_curve"` (also in `operations`).
   std::size_t swept_curves = 0;
+  /// Changes of `"pull_end"` (also in `operations`): curve ends in boundary planes pulled onto the faces
+  /// their curves cross, tried once the sweeps are done and only if such ends are left.
+  std::size_t pulled_curve_ends = 0;
   /// In the pipeline: the repair with the sweeps was not kept, and the one without them was tried
   /// (and kept if `accepted`).
   bool without_sweeps = false;
@@ -207,6 +211,18 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
       for(std::size_t k = 0; k < applied.size(); ++k) applied[k] += swept[k];
     }
     r.swept_curves = swept.back();
+    // curve ends in boundary planes that neither the short changes nor the sweeps moved: pulled onto
+    // the faces they cross (only then, so that a field the sweeps repair is left as they leave it)
+    std::vector<std::size_t> pulled(operations.size() + 2, 0);
+    if(choose_parameter(get_parameter(np, internal_np::repair_sweeps), true) && internal::has_curve_end_in_boundary_plane(state)) {
+      auto with_pull = internal::singularity_repair_operations<Mesh>();
+      with_pull.emplace_back(new internal::Sweep_curve<Mesh>());
+      with_pull.emplace_back(new internal::Pull_curve_end<Mesh>());
+      internal::greedy_surgery(state, with_pull, max_steps, pulled);
+      for(std::size_t k = 0; k < applied.size(); ++k) applied[k] += pulled[k];
+      r.swept_curves += pulled[operations.size()];
+    }
+    r.pulled_curve_ends = pulled.back();
     const internal::Hex_scale_simplification s = internal::simplify_at_hex_scale(state, hex_edge);
     r.hex_scale_clusters = s.clusters;
     r.simplified_clusters = s.removed;
@@ -217,6 +233,7 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
     for(std::size_t k = 0; k < operations.size(); ++k)
       r.operations.emplace_back(operations[k]->name(), applied[k] + (again.empty() ? 0 : again[k]));
     r.operations.emplace_back("sweep_curve", r.swept_curves);
+    r.operations.emplace_back("pull_end", r.pulled_curve_ends);
     r.operations.emplace_back("simplify_at_hex_scale", r.simplified_clusters);
   }
   for(std::size_t f = 0; f < input.size(); ++f) r.changed_faces += (input[f] != matchings.face_matching[f]);

@@ -33,6 +33,15 @@ bool is_vertex_defect(const Singularity_repair_state<Mesh>& state, typename Mesh
          state.ends_in_boundary_plane(v) || state.is_zigzag(v);
 }
 
+// Whether a curve ends in a boundary plane somewhere (ends_in_boundary_plane()).
+template <class Mesh>
+bool has_curve_end_in_boundary_plane(const Singularity_repair_state<Mesh>& state)
+{
+  for(typename Mesh::Index v = 0; v < state.mesh().number_of_vertices(); ++v)
+    if(state.mesh().is_boundary_vertex(v) && state.ends_in_boundary_plane(v)) return true;
+  return false;
+}
+
 // Queues the defects of the edges and vertices of face f and of the edges at its vertices.
 template <class Mesh>
 void queue_defects_around(const Singularity_repair_state<Mesh>& state, typename Mesh::Index f, std::deque<Repair_site>& queue)

@@ -124,6 +124,9 @@ public:
     return m_directions != nullptr && m_mesh.is_boundary_vertex(v) && !is_meshable_boundary_corner(m_mesh, m_class, m_achieved, v);
   }
 
+  // A vertex where a curve turns from one lean to the other (is_leaning_zipper()).
+  bool turns_lean(Index v) const { return is_leaning_zipper(m_mesh, m_class, m_lean, v); }
+
   // A curve ending in a boundary plane (ends_in_boundary_plane()): its whole curve is flat against a
   // patch in every map.
   bool ends_in_boundary_plane(Index v) const
