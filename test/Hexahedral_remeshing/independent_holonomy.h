@@ -56,6 +56,8 @@ struct Edge_verdict
   std::array<std::size_t, 2> vertices;
   // 4 regular, 3 / 5 quarter turn within 45 degrees of the edge, 1 jog, 0 other rotation
   int kind = 4;
+  // of a quarter turn (3, 5, jog): its unit axis in world coordinates, read in the first tetrahedron's frame
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
 };
 
 // The reading of a map that accepts edges up to about 75.5 degrees off their axis (|cos| > 1/4: valence 3
@@ -194,6 +196,7 @@ Field_verdict evaluate(const std::vector<Eigen::Vector3d>& points, const std::ve
       ++verdict.improper;
     } else {
       const Eigen::Vector3d axis = world_axis(frames[ring[0]], G);
+      v.axis = axis;
       s = axis.dot(d);
       bool jog_somewhere = false, proper_somewhere = false;
       for(std::size_t j = 0; j < ring.size(); ++j) {
