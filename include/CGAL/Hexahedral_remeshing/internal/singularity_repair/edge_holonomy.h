@@ -176,6 +176,35 @@ typename Mesh::Index zigzag_face(const Mesh& mesh, const std::vector<signed char
   return face_of_edges(mesh, edges[0], edges[1]);
 }
 
+// The unit axis, in world coordinates, of the quarter turn of interior edge e (holonomy per interior edge,
+// read in the frame of the first tetrahedron of its ring).
+template <class Mesh>
+Eigen::Vector3d quarter_turn_world_axis(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, const std::vector<int>& holonomy,
+                                        typename Mesh::Index e)
+{
+  return (frames[mesh.edge_ring(e)[0]] * octahedral_group().axis(holonomy[e])).normalized();
+}
+
+// The smallest |cos| between `axis` and, for each boundary triangle at boundary vertex v, the axis of its
+// tetrahedron's frame closest to its normal (the axis the map puts that triangle's plane across): below
+// sqrt(1/2), a curve along `axis` lies in one of those planes at v.
+template <class Mesh>
+double smallest_boundary_axis_cosine(const Mesh& mesh, const std::vector<Eigen::Matrix3d>& frames, typename Mesh::Index v,
+                                     const Eigen::Vector3d& axis)
+{
+  double smallest = 1;
+  for(auto b_edge : mesh.vertex_edges(v)) {
+    if(!mesh.is_boundary_edge(b_edge)) continue;
+    for(auto b : mesh.edge_boundary_triangles(b_edge)) {
+      const auto n = mesh.boundary_triangle_normal(b);
+      const Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+      const Eigen::Matrix3d& E = frames[mesh.boundary_triangle_tetrahedron(b)];
+      smallest = std::min(smallest, std::abs(E.col(closest_local_axis(E, normal)).normalized().dot(axis)));
+    }
+  }
+  return smallest;
+}
+
 // Whether a singular curve ends at (or touches) boundary vertex v along a boundary triangle it runs
 // alongside: the map puts the three corners of every boundary triangle on an integer plane across the
 // frame axis closest to its normal (integer_tags.h) and every quarter-turn edge on an integer line along
@@ -190,20 +219,10 @@ bool ends_in_boundary_plane(const Mesh& mesh, const std::vector<Eigen::Matrix3d>
                             const std::vector<int>& holonomy, typename Mesh::Index v)
 {
   if(!mesh.is_boundary_vertex(v)) return false;
-  const double limit = std::sqrt(0.5);
   for(auto e : mesh.vertex_edges(v)) {
     const signed char c = edge_class[e];
     if(c != 3 && c != 5 && c != JOG_CLASS) continue;
-    const Eigen::Vector3d axis = (frames[mesh.edge_ring(e)[0]] * octahedral_group().axis(holonomy[e])).normalized();
-    for(auto b_edge : mesh.vertex_edges(v)) {
-      if(!mesh.is_boundary_edge(b_edge)) continue;
-      for(auto b : mesh.edge_boundary_triangles(b_edge)) {
-        const auto n = mesh.boundary_triangle_normal(b);
-        const Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
-        const Eigen::Matrix3d& E = frames[mesh.boundary_triangle_tetrahedron(b)];
-        if(std::abs(E.col(closest_local_axis(E, normal)).normalized().dot(axis)) < limit) return true;
-      }
-    }
+    if(smallest_boundary_axis_cosine(mesh, frames, v, quarter_turn_world_axis(mesh, frames, holonomy, e)) < std::sqrt(0.5)) return true;
   }
   return false;
 }

@@ -60,7 +60,7 @@ public:
       const signed char c = state.edge_class(e);
       if(c != 3 && c != 5 && c != JOG_CLASS) continue;
       Goal goal;
-      if(!find_goal(state, v, world_axis(state, e), goal)) continue;
+      if(!find_goal(state, v, quarter_turn_world_axis(state.mesh(), state.frames(), state.holonomies(), e), goal)) continue;
       Face_change chain = best_chain(state, v, e, goal);
       if(chain.matching >= 0) out.push_back(std::move(chain));
     }
@@ -69,26 +69,11 @@ public:
 private:
   static Eigen::Vector3d point(const Mesh& mesh, Index v) { return to_eigen_point(mesh.point(v)); }
 
-  static Eigen::Vector3d world_axis(const Singularity_repair_state<Mesh>& state, Index e)
-  {
-    return (state.frames()[state.mesh().edge_ring(e)[0]] * octahedral_group().axis(state.holonomy(e))).normalized();
-  }
-
   // Whether every boundary triangle at boundary vertex t is crossed by a curve along `axis` (its frame
   // axis closest to its normal is the curve's, within 25 degrees).
   static bool is_crossed_only(const Singularity_repair_state<Mesh>& state, Index t, const Eigen::Vector3d& axis)
   {
-    const Mesh& mesh = state.mesh();
-    for(auto b_edge : mesh.vertex_edges(t)) {
-      if(!mesh.is_boundary_edge(b_edge)) continue;
-      for(auto b : mesh.edge_boundary_triangles(b_edge)) {
-        const auto n = mesh.boundary_triangle_normal(b);
-        const Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
-        const Eigen::Matrix3d& E = state.frames()[mesh.boundary_triangle_tetrahedron(b)];
-        if(std::abs(E.col(closest_local_axis(E, normal)).normalized().dot(axis)) < 0.9) return false;
-      }
-    }
-    return true;
+    return smallest_boundary_axis_cosine(state.mesh(), state.frames(), t, axis) >= 0.9;
   }
 
   // The nearest boundary vertex (fewest boundary edges from v, then closest) on crossed faces only.

@@ -237,6 +237,7 @@ public:
   }
 
   int holonomy(Index e) const { return m_holonomy[e]; }
+  const std::vector<int>& holonomies() const { return m_holonomy; }
   double mean_edge_length() const { return m_mean_length; }
   const std::vector<Eigen::Matrix3d>& frames() const { return m_frames; }
 
