@@ -941,6 +941,28 @@ std::size_t invalid_boundary_corners(const Mesh& m, const independent::Field_ver
 // Every shared model through the pipeline, with and without the repair. Checked independently from
 // the kept matchings and from the returned frames alone: never worse than without the repair; the
 // prescribed boundary valences the field achieves stay as they were.
+namespace {
+
+// The pipeline on the shared model `file` without and with the repair, and the independent verdicts of
+// both kept matchings.
+struct With_and_without_repair
+{
+  Mesh mesh;
+  HR::Frame_field_pipeline_result plain, repaired;
+  independent::Field_verdict kept_plain, kept;
+};
+
+void run_with_and_without_repair(const std::string& file, With_and_without_repair& run)
+{
+  HR::IO::read_tetrahedral_mesh(file, run.mesh, HR::parameters::split_boundary_chords(true));
+  run.plain = HR::compute_frame_field_pipeline(run.mesh, HR::parameters::singularity_repair(false));
+  run.repaired = HR::compute_frame_field_pipeline(run.mesh, HR::parameters::singularity_repair(true));
+  run.kept_plain = evaluate_matchings(run.mesh, run.plain.frames, run.plain.matchings);
+  run.kept = evaluate_matchings(run.mesh, run.repaired.frames, run.repaired.matchings);
+}
+
+} // namespace
+
 TEST(Meshability, SharedModelsNeverWorse)
 {
   const auto files = shared_models();
@@ -948,12 +970,11 @@ TEST(Meshability, SharedModelsNeverWorse)
   for(const std::string& f : files) {
     SCOPED_TRACE(f);
     const std::string name = fs::path(f).stem().string();
-    Mesh m;
-    HR::IO::read_tetrahedral_mesh(f, m, HR::parameters::split_boundary_chords(true));
-    const auto plain = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(false));
-    const auto r = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(true));
-    const auto kept_plain = evaluate_matchings(m, plain.frames, plain.matchings);
-    const auto kept = evaluate_matchings(m, r.frames, r.matchings);
+    With_and_without_repair run;
+    run_with_and_without_repair(f, run);
+    const Mesh& m = run.mesh;
+    const auto &plain = run.plain, &r = run.repaired;
+    const auto &kept_plain = run.kept_plain, &kept = run.kept;
     const auto alone_plain = independent::evaluate_frames(points_of(m), tets_of(m), plain.frames);
     const auto alone = independent::evaluate_frames(points_of(m), tets_of(m), r.frames);
     // the package's check agrees with the independent count (its own reasons beyond these aside), up to
@@ -1021,12 +1042,11 @@ TEST(Meshability, CurveEndPulledOntoTheFaceItCrosses)
   for(const std::string& f : shared_models())
     if(fs::path(f).stem().string() == "n03c_skijump_box_cyl") file = f;
   if(file.empty()) GTEST_SKIP() << "../shared/data not present";
-  Mesh m;
-  HR::IO::read_tetrahedral_mesh(file, m, HR::parameters::split_boundary_chords(true));
-  const auto plain = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(false));
-  const auto r = HR::compute_frame_field_pipeline(m, HR::parameters::singularity_repair(true));
-  const auto kept_plain = evaluate_matchings(m, plain.frames, plain.matchings);
-  const auto kept = evaluate_matchings(m, r.frames, r.matchings);
+  With_and_without_repair run;
+  run_with_and_without_repair(file, run);
+  const Mesh& m = run.mesh;
+  const auto &plain = run.plain, &r = run.repaired;
+  const auto &kept_plain = run.kept_plain, &kept = run.kept;
   EXPECT_GE(ends_in_boundary_planes(m, kept_plain), 1u);
   EXPECT_EQ(ends_in_boundary_planes(m, kept), 0u);
   EXPECT_LE(kept.defects(), kept_plain.defects());
