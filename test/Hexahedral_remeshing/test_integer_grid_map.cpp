@@ -816,7 +816,34 @@ struct Seamless_check
   std::size_t not_positive = 0;
   double transition_spread = 0;
   std::size_t boundary_faces = 0, boundary_faces_off_planes = 0;
+  std::size_t branched = 0; // interior edges whose parameter dihedral angles do not sum to 3, 4 or 5 quarter turns
 };
+
+// Interior edges (on no boundary face) of the map's mesh around which the dihedral angles of the
+// tetrahedra's parameter corners `u` do not sum to 3, 4 or 5 quarter turns (nearest multiple).
+std::size_t count_branched_seamless_edges(const HR::Integer_grid_map& map, const std::vector<std::array<Eigen::Vector3d, 4> >& u,
+                                          const std::set<std::array<std::uint32_t, 2> >& boundary_edges)
+{
+  static const int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  std::map<std::array<std::uint32_t, 2>, double> angle_sum;
+  for(std::size_t t = 0; t < map.tetrahedra.size(); ++t)
+    for(const auto& e : edges) {
+      std::array<std::uint32_t, 2> key{{map.tetrahedra[t][e[0]], map.tetrahedra[t][e[1]]}};
+      std::sort(key.begin(), key.end());
+      if(boundary_edges.count(key)) continue;
+      const Eigen::Vector3d a = u[t][e[0]], d = (u[t][e[1]] - a).normalized();
+      Eigen::Vector3d p = u[t][e[2]] - a, q = u[t][e[3]] - a;
+      p -= p.dot(d) * d;
+      q -= q.dot(d) * d;
+      angle_sum[key] += std::acos((std::max)(-1.0, (std::min)(1.0, p.normalized().dot(q.normalized()))));
+    }
+  std::size_t branched = 0;
+  for(const auto& kv : angle_sum) {
+    const long quarter_turns = std::lround(kv.second / (M_PI / 2));
+    branched += quarter_turns < 3 || quarter_turns > 5;
+  }
+  return branched;
+}
 
 Seamless_check check_seamless_map(const HR::Integer_grid_map& map, const std::vector<std::array<Eigen::Vector3d, 4> >& u)
 {
@@ -827,6 +854,7 @@ Seamless_check check_seamless_map(const HR::Integer_grid_map& map, const std::ve
     c.not_positive += CGAL::orientation(point(t, 0), point(t, 1), point(t, 2), point(t, 3)) != CGAL::POSITIVE;
   auto corner = [&](std::uint32_t t, std::uint32_t v) { return int(std::find(map.tetrahedra[t].begin(), map.tetrahedra[t].end(), v) - map.tetrahedra[t].begin()); };
   std::set<std::array<std::uint32_t, 3> > interior;
+  std::set<std::array<std::uint32_t, 2> > boundary_edges;
   for(const auto& tr : map.transitions) {
     const auto& a = map.tetrahedra[tr.tetrahedra[0]];
     std::vector<std::uint32_t> shared;
@@ -852,11 +880,13 @@ Seamless_check check_seamless_map(const HR::Integer_grid_map& map, const std::ve
       std::sort(key.begin(), key.end());
       if(interior.count(key)) continue;
       ++c.boundary_faces;
+      for(int i = 0; i < 3; ++i) boundary_edges.insert({{(std::min)(key[i], key[(i + 1) % 3]), (std::max)(key[i], key[(i + 1) % 3])}});
       bool on_plane = false;
       for(int axis = 0; axis < 3; ++axis)
         on_plane = on_plane || (u[t][corners[0]][axis] == u[t][corners[1]][axis] && u[t][corners[0]][axis] == u[t][corners[2]][axis]);
       c.boundary_faces_off_planes += !on_plane;
     }
+  if(c.not_positive == 0) c.branched = count_branched_seamless_edges(map, u, boundary_edges);
   return c;
 }
 
@@ -888,8 +918,9 @@ TEST(IntegerGridMap, SeamlessMapIsInjectiveAndSeamless)
                 r.report.seamless_seconds);
     EXPECT_EQ(c.not_positive, r.report.seamless_folds.size());
     EXPECT_EQ(c.not_positive, r.report.seamless_inverted_tetrahedra + r.report.seamless_degenerate_tetrahedra);
-    EXPECT_EQ(r.report.seamless_injective, c.not_positive == 0);
+    EXPECT_EQ(r.report.seamless_injective, c.not_positive == 0 && r.report.seamless_branched_edges == 0);
     EXPECT_EQ(r.report.seamless_injective, k.injective);
+    if(c.not_positive == 0) EXPECT_EQ(r.report.seamless_branched_edges, c.branched);
     EXPECT_EQ(c.transition_spread, 0.0); // snapped: the transitions hold exactly
     EXPECT_EQ(c.boundary_faces_off_planes, 0u);
     if(!k.injective) EXPECT_GE(c.not_positive, r.report.structurally_flat_tetrahedra);

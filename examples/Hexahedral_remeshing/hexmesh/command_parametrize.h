@@ -159,6 +159,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
   const std::size_t shown = (std::min)(m.seamless_folds.size(), std::size_t(100));
   json.begin("seamless_map")
       .value("injective", m.seamless_injective)
+      .value("branched_edges", m.seamless_branched_edges)
       .value("inverted_tetrahedra", m.seamless_inverted_tetrahedra)
       .value("degenerate_tetrahedra", m.seamless_degenerate_tetrahedra)
       .value("inverted_before_untangling", m.relaxed_inverted_tetrahedra)
@@ -265,6 +266,8 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
       << " integer variables, " << m.rounding_rounds << " rounding and " << m.stiffening_rounds << " stiffening rounds\n"
       << "  seamless map        "
       << (m.seamless_injective ? std::string("injective")
+          : m.seamless_branched_edges ? "NOT injective: no fold, but " + std::to_string(m.seamless_branched_edges) +
+                                          " interior edges branched (angle sums not 3, 4 or 5 quarter turns)"
                                : "NOT injective: " + std::to_string(m.seamless_inverted_tetrahedra) + " inverted and " +
                                    std::to_string(m.seamless_degenerate_tetrahedra) + " flat tetrahedra (" +
                                    std::to_string(m.structurally_flat_tetrahedra) + " flat for every map); " +

@@ -324,8 +324,12 @@ struct Integer_grid_map_result
   /// The seamless map: tetrahedra whose parameter points are coplanar (exact; includes the
   /// structurally flat ones, which no seamless map with these constraints can open).
   std::size_t seamless_degenerate_tetrahedra = 0;
-  /// True if every tetrahedron of the seamless map is positively oriented (exact): the map is
-  /// locally injective before the rounding.
+  /// The seamless map without a fold: interior edges whose ring's parameter-space dihedral angles sum
+  /// to a number of quarter turns other than 3, 4 or 5 (the untangling wrapped the map around them).
+  /// Not counted where some tetrahedron folds.
+  std::size_t seamless_branched_edges = 0;
+  /// True if every tetrahedron of the seamless map is positively oriented (exact) and no interior edge
+  /// is branched (`seamless_branched_edges`): the map is locally injective before the rounding.
   bool seamless_injective = false;
   /// Where the seamless map is not injective: its inverted and flat tetrahedra (indices in the map's
   /// mesh, `Integer_grid_map::tetrahedra`).

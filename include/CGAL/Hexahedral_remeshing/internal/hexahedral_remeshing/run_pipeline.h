@@ -170,7 +170,9 @@ inline void name_failed_stage(Hexahedral_remeshing_result& r)
   } else if(!r.map.seamless_injective && r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {
     r.failed_stage = "seamless_map";
     r.failure_reason = "the seamless map is not injective before rounding (" + std::to_string(r.map.seamless_inverted_tetrahedra) +
-                       " inverted and " + std::to_string(r.map.seamless_degenerate_tetrahedra) + " flat tetrahedra after its untangling); " +
+                       " inverted and " + std::to_string(r.map.seamless_degenerate_tetrahedra) + " flat tetrahedra after its untangling" +
+                       (r.map.seamless_branched_edges ? ", " + std::to_string(r.map.seamless_branched_edges) + " branched interior edges" : std::string()) +
+                       "); " +
                        std::to_string(r.map.inverted_tetrahedra) + " inverted and " + std::to_string(r.map.degenerate_tetrahedra) +
                        " flat in the final map" + seamless_fold_phrase(r.map);
   } else if(r.map.inverted_tetrahedra + r.map.degenerate_tetrahedra > 0) {

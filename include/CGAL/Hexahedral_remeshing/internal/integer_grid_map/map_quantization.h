@@ -54,7 +54,8 @@ void report_seamless_map(const Seamless_map& m, Result& r)
   r.relaxed_inverted_tetrahedra = m.inverted_before_untangling;
   r.seamless_inverted_tetrahedra = m.inverted;
   r.seamless_degenerate_tetrahedra = m.degenerate;
-  r.seamless_injective = m.success && m.folds.empty();
+  r.seamless_branched_edges = m.branched;
+  r.seamless_injective = m.success && m.folds.empty() && m.branched == 0;
   r.seamless_folds = m.folds;
   r.seamless_untangling_ran = m.untangling_ran;
 }
