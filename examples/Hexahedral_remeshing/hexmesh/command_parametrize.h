@@ -29,7 +29,7 @@ namespace hexmesh {
 inline std::vector<std::string> parametrize_options()
 {
   std::vector<std::string> options = input_options();
-  for(const char* o : {"heuristic", "valences", "hexex", "vtk", "json", "valences-out", "target-edge-length", "threads",
+  for(const char* o : {"heuristic", "valences", "hexex", "seamless-hexex", "vtk", "json", "valences-out", "target-edge-length", "threads",
                        "acute-edge-band", "field-initialization"})
     options.push_back(o);
   return options;
@@ -58,17 +58,16 @@ struct Map_progress_visitor : CGAL::Hexahedral_remeshing::Integer_grid_map_visit
 inline CGAL::Hexahedral_remeshing::Integer_grid_map_result
 run_integer_grid_map(const std::string& in, const Mesh& mesh, const CGAL::Hexahedral_remeshing::Frame_field_pipeline_result& f,
                      double target_edge_length, CGAL::Hexahedral_remeshing::Integer_grid_map& map, Progress& progress,
-                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization, bool relocation, int continuation_steps)
+                     CGAL::Hexahedral_remeshing::Integer_grid_map_quantization quantization, bool relocation, int continuation_steps,
+                     std::vector<std::array<Eigen::Vector3d, 4> >* seamless = nullptr)
 {
   namespace HR = CGAL::Hexahedral_remeshing;
   namespace HP = CGAL::Hexahedral_remeshing::parameters;
   Map_progress_visitor visitor(progress);
   try {
-    if(target_edge_length > 0)
-      return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                          HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::maximum_continuation_steps(continuation_steps, HP::target_edge_length(target_edge_length)))).visitor(std::ref(visitor)));
+    const double h = target_edge_length > 0 ? target_edge_length : HR::internal::default_target_edge_length(mesh);
     return HR::compute_integer_grid_map(mesh, f.frames, f.matchings, f.singularities, map,
-                                        HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::maximum_continuation_steps(continuation_steps))).visitor(std::ref(visitor)));
+                                        HP::quantization(quantization, HP::singular_vertex_relocation(relocation, HP::maximum_continuation_steps(continuation_steps, HP::target_edge_length(h, HP::seamless_map_parameters(seamless))))).visitor(std::ref(visitor)));
   } catch(const HR::Input_error&) {
     throw;
   } catch(const std::exception& e) {
@@ -313,7 +312,7 @@ inline int command_parametrize(const Arguments& args)
   if(!args.has("hexex")) throw Usage_error("parametrize needs --hexex OUT.hexex");
   const double target = target_edge_length_option(args);
   Output_files outputs;
-  for(const char* o : {"hexex", "vtk", "json", "valences-out"})
+  for(const char* o : {"hexex", "seamless-hexex", "vtk", "json", "valences-out"})
     if(args.has(o)) outputs.add(args.value(o));
 
   Progress progress(options.quiet);
@@ -326,7 +325,9 @@ inline int command_parametrize(const Arguments& args)
   const double hex_edge = HR::internal::pipeline_hex_edge_length(mesh, HR::parameters::target_edge_length(target));
   const HR::Frame_field_pipeline_result f = run_frame_field_pipeline(options, in, mesh, prescribed, progress, 2 * hex_edge, hex_edge);
   HR::Integer_grid_map map;
-  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization, options.relocation, options.continuation_steps);
+  std::vector<std::array<Eigen::Vector3d, 4> > seamless;
+  const HR::Integer_grid_map_result m = run_integer_grid_map(in, mesh, f, target, map, progress, options.quantization, options.relocation,
+                                                             options.continuation_steps, args.has("seamless-hexex") ? &seamless : nullptr);
   progress.start("checking the map");
   const HR::Integer_grid_map_check check = HR::check_integer_grid_map(map);
   const HR::Boundary_valence_agreement agreement = map_valence_agreement(mesh, f.valences, check);
@@ -341,6 +342,14 @@ inline int command_parametrize(const Arguments& args)
   progress.start("writing the outputs");
   const std::string hexex = args.value("hexex");
   if(write_map) outputs.write({hexex}, [&] { HR::IO::write_HexEx(hexex, map); });
+  if(args.has("seamless-hexex") && seamless.size() == map.tetrahedra.size()) {
+    // the map before any rounding, on the map's mesh: not an integer-grid map (its transitions' shifts
+    // and its boundary planes are not integers), for inspection and independent checks
+    HR::Integer_grid_map s = map;
+    s.parameters = seamless;
+    const std::string v = args.value("seamless-hexex");
+    outputs.write({v}, [&] { HR::IO::write_HexEx(v, s); });
+  }
   if(args.has("vtk") && write_map) {
     const std::string v = args.value("vtk");
     outputs.write({v}, [&] { HR::IO::write_VTK_integer_grid_map(v, map); });
