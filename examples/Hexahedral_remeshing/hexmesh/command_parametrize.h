@@ -159,6 +159,7 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
   json.begin("seamless_map")
       .value("injective", m.seamless_injective)
       .value("branched_edges", m.seamless_branched_edges)
+      .value("unbranching_ran", m.seamless_unbranching_ran)
       .value("inverted_tetrahedra", m.seamless_inverted_tetrahedra)
       .value("degenerate_tetrahedra", m.seamless_degenerate_tetrahedra)
       .value("inverted_before_untangling", m.relaxed_inverted_tetrahedra)

@@ -328,6 +328,10 @@ struct Integer_grid_map_result
   /// to a number of quarter turns other than 3, 4 or 5 (the untangling wrapped the map around them).
   /// Not counted where some tetrahedron folds.
   std::size_t seamless_branched_edges = 0;
+  /// True if the untangled seamless map folded nowhere but branched, and was untangled again from the
+  /// energy's minimizer with every variable free (boundary planes and singular lines too), kept if it
+  /// folds nowhere and branches less (`seamless_branched_edges` is the count of the map kept).
+  bool seamless_unbranching_ran = false;
   /// True if every tetrahedron of the seamless map is positively oriented (exact) and no interior edge
   /// is branched (`seamless_branched_edges`): the map is locally injective before the rounding.
   bool seamless_injective = false;

@@ -58,6 +58,7 @@ void report_seamless_map(const Seamless_map& m, Result& r)
   r.seamless_injective = m.success && m.folds.empty() && m.branched == 0;
   r.seamless_folds = m.folds;
   r.seamless_untangling_ran = m.untangling_ran;
+  r.seamless_unbranching_ran = m.unbranching_ran;
 }
 
 // The complex's part of the report (`Complex`: Integer_grid_map_complex).
