@@ -8,8 +8,9 @@
 // each chain extended by the moves of the singular edges of its last two faces, ranked by its change of
 // cost plus the distance of the curve's first edges to the line through that vertex along the curve's
 // axis; states reached before are dropped; the chain of lowest cost found is proposed if it lowers the
-// cost and frees the end (frees_end_alone()). Where a curve ends on a concave feature curve (a blind hole's rim, a boss's foot), the vertex it
-// must reach lies a few triangles away across the face it crosses, and the cost rises on the way (the
+// cost and frees the end (frees_end_alone()). Where a curve ends on a concave feature curve (a blind
+// hole's rim, a boss's foot), the vertex it must reach lies a few triangles away across the face it
+// crosses, and the cost rises on the way (the
 // curve bends into jogs before it is straight again): the cheapest-next chain of Sweep_curve wanders off,
 // a ranked search with a goal gets there. Such an end pins the curve's line to the plane it touches; a
 // curve that touches two walls' planes so squeezes the wall between them to nothing in every map (the
