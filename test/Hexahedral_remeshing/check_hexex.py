@@ -14,7 +14,10 @@ Reads the vertices and, per tetrahedron, the parameters of its 4 corners in its 
     (--edge-valence: every mesh edge with both ends on the segment must have valence K);
   - branched edges: interior edges whose tetrahedra are all positive but whose valence is 1 or less
     (the map is not locally injective there although no tetrahedron is inverted), and, reported only,
-    the interior edges of valence other than 3, 4 or 5 (unusual_interior_edges).
+    the interior edges of valence other than 3, 4 or 5 (unusual_interior_edges);
+  - wrapped boundary vertices, reported only: boundary vertices whose boundary triangles' parameter
+    angles (negative on inverted tetrahedra) sum to 0 or fewer quarter turns, or, where the surface is
+    smooth (space angles within 10 degrees of 2 pi), to other than 3, 4 or 5.
 --expect-valid makes the exit status 1 unless every check above passes (flat tetrahedra, where a
 singular curve's jog collapses, are counted but tolerated, as by the extraction). Writes a JSON summary.
 Needs python3 with numpy (Debian python3-numpy). Written for the tests, apart from the package code.
@@ -171,6 +174,30 @@ def main():
     unusual = ~is_boundary_edge & clean & ((rounded < 3) | (rounded > 5))
     branched = ~is_boundary_edge & clean & (rounded <= 1)
 
+    # boundary vertices around which the map wraps the surface: the parameter angles of a vertex's boundary
+    # triangles (negative where the tetrahedron is inverted) sum to a positive number of quarter turns at a
+    # hex mesh's boundary vertex, 3, 4 or 5 where the surface is smooth (space angles summing to 2 pi)
+    bpts = pts[bverts]
+
+    def corner_angles(q):
+        out = []
+        for c in range(3):
+            a_, b_ = q[:, (c + 1) % 3] - q[:, c], q[:, (c + 2) % 3] - q[:, c]
+            na, nb = np.linalg.norm(a_, axis=1), np.linalg.norm(b_, axis=1)
+            cosv = np.sum(a_ * b_, axis=1) / np.where(na * nb > 0, na * nb, 1)
+            out.append(np.where(na * nb > 0, np.arccos(np.clip(cosv, -1, 1)), 0))
+        return np.stack(out, axis=1)
+    pang = corner_angles(bp) * (par * space)[bt][:, None]
+    sang = corner_angles(bpts)
+    psum = np.bincount(bverts.reshape(-1), weights=pang.reshape(-1), minlength=len(pts))
+    ssum = np.bincount(bverts.reshape(-1), weights=sang.reshape(-1), minlength=len(pts))
+    on_boundary = np.bincount(bverts.reshape(-1), minlength=len(pts)) > 0
+    q = psum / (math.pi / 2)
+    turns = np.round(q)
+    certain = on_boundary & (np.abs(q - turns) <= 0.1)
+    smooth = np.abs(ssum - 2 * math.pi) < math.pi / 18
+    wrapped_vertices = np.nonzero(certain & ((turns <= 0) | (smooth & ((turns < 3) | (turns > 5)))))[0]
+
     def histogram(vals):
         h = {}
         for v in vals:
@@ -205,6 +232,7 @@ def main():
         'boundary_edge_valences': histogram(valence[is_boundary_edge]),
         'interior_edge_valences': histogram(valence[~is_boundary_edge]),
         'unusual_interior_edges': int(np.sum(unusual)), 'branched_edges': int(np.sum(branched)),
+        'wrapped_boundary_vertices': int(len(wrapped_vertices)),
         'segments': segments,
     }
     # flat tetrahedra are tolerated (collapsed jogs of singular curves; the extraction skips them)

@@ -164,6 +164,9 @@ inline void add_integer_grid_map(Json& json, const CGAL::Hexahedral_remeshing::I
       .value("degenerate_tetrahedra", m.seamless_degenerate_tetrahedra)
       .value("inverted_before_untangling", m.relaxed_inverted_tetrahedra)
       .value("untangling_ran", m.seamless_untangling_ran)
+      .value("wrapped_boundary_vertices", m.seamless_wrapped_boundary_vertices.size())
+      .value("wrapped_before_untangling", m.relaxed_wrapped_boundary_vertices)
+      .value("folds_at_wrapped_boundary", m.seamless_folds_at_wrapped_boundary)
       .array("folded_tetrahedra", std::vector<std::uint32_t>(m.seamless_folds.begin(), m.seamless_folds.begin() + std::ptrdiff_t(shown)))
       .begin("folds_by_cause")
       .value("structural_at_boundary", m.seamless_fold_causes.structural_at_boundary)
@@ -271,7 +274,12 @@ inline void print_integer_grid_map(std::ostream& out, const CGAL::Hexahedral_rem
                                : "NOT injective: " + std::to_string(m.seamless_inverted_tetrahedra) + " inverted and " +
                                    std::to_string(m.seamless_degenerate_tetrahedra) + " flat tetrahedra (" +
                                    std::to_string(m.structurally_flat_tetrahedra) + " flat for every map); " +
-                                   seamless_fold_cause_list(m.seamless_fold_causes))
+                                   seamless_fold_cause_list(m.seamless_fold_causes) +
+                                   (m.seamless_wrapped_boundary_vertices.empty()
+                                      ? std::string()
+                                      : "; the boundary wrapped around " + std::to_string(m.seamless_wrapped_boundary_vertices.size()) +
+                                          " vertices (" + std::to_string(m.relaxed_wrapped_boundary_vertices) + " in the minimizer), " +
+                                          std::to_string(m.seamless_folds_at_wrapped_boundary) + " folds there"))
       << " before rounding"
       << (m.relocated_vertices ? "; " + std::to_string(m.relocated_vertices) + " curve vertices moved towards their axes (jogs " +
                                    std::to_string(m.relocation_jogs_before) + " -> " + std::to_string(m.relocation_jogs_after) + ")"

@@ -328,6 +328,18 @@ struct Integer_grid_map_result
   /// to a number of quarter turns other than 3, 4 or 5 (the untangling wrapped the map around them).
   /// Not counted where some tetrahedron folds.
   std::size_t seamless_branched_edges = 0;
+  /// Where the seamless map folds: its boundary vertices around which it wraps the boundary surface
+  /// (vertex indices of the map's mesh). At a boundary vertex of a hex mesh, the parameter angles of the
+  /// vertex's boundary triangles (negative where the tetrahedron is inverted) sum to a positive number of
+  /// quarter turns, 3, 4 or 5 on a smooth part of the surface; a sum of 0 or less, or on a smooth part one
+  /// other than 3, 4 or 5, is listed. The untangling changes such a winding only through a degenerate
+  /// triangle, and seldom does (the energy's minimizer is wrapped already, `relaxed_wrapped_boundary_vertices`).
+  /// Computed in floating point as a diagnostic; empty where the seamless map folds nowhere.
+  std::vector<std::uint32_t> seamless_wrapped_boundary_vertices;
+  /// The same count on the energy's minimizer before the untangling (0 if the minimizer folds nowhere).
+  std::size_t relaxed_wrapped_boundary_vertices = 0;
+  /// Tetrahedra of `seamless_folds` with a corner in `seamless_wrapped_boundary_vertices`.
+  std::size_t seamless_folds_at_wrapped_boundary = 0;
   /// True if the untangled seamless map folded nowhere but branched, and was untangled again from the
   /// energy's minimizer with every variable free (boundary planes and singular lines too), kept if it
   /// folds nowhere and branches less (`seamless_branched_edges` is the count of the map kept).

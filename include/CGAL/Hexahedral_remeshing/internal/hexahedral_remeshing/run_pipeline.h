@@ -154,7 +154,11 @@ inline std::string seamless_fold_phrase(const Integer_grid_map_result& m)
   return "; the seamless map folds " + std::to_string(c.total()) + " tetrahedra: " + std::to_string(c.at_field_defects) +
          " at the field's defects, " + std::to_string(c.structural_at_boundary + c.structural_inside) +
          " flat in every map (" + std::to_string(c.structural_at_boundary) + " at the boundary), " +
-         std::to_string(c.at_boundary + c.inside) + " others (" + std::to_string(c.at_boundary) + " at the boundary)";
+         std::to_string(c.at_boundary + c.inside) + " others (" + std::to_string(c.at_boundary) + " at the boundary)" +
+         (m.seamless_wrapped_boundary_vertices.empty()
+            ? std::string()
+            : "; it wraps the boundary around " + std::to_string(m.seamless_wrapped_boundary_vertices.size()) + " vertices (" +
+                std::to_string(m.seamless_folds_at_wrapped_boundary) + " folds there)");
 }
 
 inline void name_failed_stage(Hexahedral_remeshing_result& r)

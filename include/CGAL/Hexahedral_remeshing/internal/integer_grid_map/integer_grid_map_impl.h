@@ -163,6 +163,7 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   report_seamless_map(seamless, r);
   r.seamless_fold_causes = classify_seamless_folds<Traits, decltype(r.seamless_fold_causes)>(
     mesh, r.seamless_folds, flat, field_defect_vertices(mesh, singularities, jog_edges));
+  r.seamless_folds_at_wrapped_boundary = count_tetrahedra_at(mesh, r.seamless_folds, seamless.wrapped);
   if(o.seamless_parameters) corner_parameters(P * seamless.y + x0, *o.seamless_parameters);
   r.seamless_seconds = stage.end();
 

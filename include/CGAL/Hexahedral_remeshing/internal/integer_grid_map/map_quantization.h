@@ -59,6 +59,8 @@ void report_seamless_map(const Seamless_map& m, Result& r)
   r.seamless_folds = m.folds;
   r.seamless_untangling_ran = m.untangling_ran;
   r.seamless_unbranching_ran = m.unbranching_ran;
+  r.relaxed_wrapped_boundary_vertices = m.wrapped_before_untangling;
+  r.seamless_wrapped_boundary_vertices = m.wrapped;
 }
 
 // The complex's part of the report (`Complex`: Integer_grid_map_complex).

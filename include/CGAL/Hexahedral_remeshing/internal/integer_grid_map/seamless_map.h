@@ -12,6 +12,7 @@
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/sanitize.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/stiffening.h>
 #include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/untangle_map.h>
+#include <CGAL/Hexahedral_remeshing/internal/integer_grid_map/wrapped_boundary.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -42,6 +43,8 @@ struct Seamless_map
   std::size_t inverted = 0, degenerate = 0;   // exact orientation of the final seamless map
   std::vector<std::uint32_t> folds;           // its inverted and flat tetrahedra
   std::size_t branched = 0;                   // without a fold: interior edges not turning 3, 4 or 5 quarter turns
+  std::size_t wrapped_before_untangling = 0;  // boundary vertices the minimizer wraps the surface around
+  std::vector<std::uint32_t> wrapped;         // those of the final seamless map (wrapped_boundary.h)
   bool untangling_ran = false;
   bool unbranching_ran = false;               // the untangled map branched: unbranch() ran
   bool success = true;                        // false if the factorization failed
@@ -89,6 +92,7 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
   const std::vector<char> none(std::size_t(P.cols()), 0);
   const Eigen::VectorXd x = P * m.y + x0;
   m.inverted_before_untangling = count_non_positive_jacobians(geometry, x);
+  if(m.inverted_before_untangling > 0) m.wrapped_before_untangling = wrapped_boundary_vertices(mesh, x).size();
   if(untangle && count_non_positive_jacobians(geometry, x, &flat) > 0) {
     const std::size_t nt = geometry.volumes.size();
     const std::vector<char> region = untangling_region(mesh, geometry, x, flat, rings);
@@ -108,6 +112,7 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
   // edge (measured: the flange of make_parts.py at 87,415 tetrahedra, 3 such edges, which the
   // continuation then carries to the integer values)
   if(m.folds.empty()) m.branched = count_branched_edges(mesh, P * m.y + x0);
+  else m.wrapped = wrapped_boundary_vertices(mesh, P * m.y + x0);
   return m;
 }
 
