@@ -334,7 +334,8 @@ struct Integer_grid_map_result
   /// quarter turns, 3, 4 or 5 on a smooth part of the surface; a sum of 0 or less, or on a smooth part one
   /// other than 3, 4 or 5, is listed. The untangling changes such a winding only through a degenerate
   /// triangle, and seldom does (the energy's minimizer is wrapped already, `relaxed_wrapped_boundary_vertices`).
-  /// Computed in floating point as a diagnostic; empty where the seamless map folds nowhere.
+  /// Computed in floating point as a diagnostic (two curves ending at one smooth vertex, 2 or 6 quarter
+  /// turns, are listed too); empty where the seamless map folds nowhere.
   std::vector<std::uint32_t> seamless_wrapped_boundary_vertices;
   /// The same count on the energy's minimizer before the untangling (0 if the minimizer folds nowhere).
   std::size_t relaxed_wrapped_boundary_vertices = 0;

@@ -16,6 +16,9 @@
 // vertices), and left 3 to 283 on 23 of the 26 whose seamless map folds.
 // A diagnostic in floating point (angles, not decisions): the sum is rounded to quarter turns, a sum
 // farther than a tenth of a quarter turn from one is not counted (a flat triangle makes it ambiguous).
+// Two singular curves ending at one smooth boundary vertex would give 2 or 6 quarter turns, a valid
+// configuration that this count lists as well (the public map rockerarm_q of ../shared/data/igm has two
+// smooth vertices at 2): the count says where to look, it does not make a map invalid.
 #ifndef CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_WRAPPED_BOUNDARY_H
 #define CGAL_HEXAHEDRAL_REMESHING_INTERNAL_INTEGER_GRID_MAP_WRAPPED_BOUNDARY_H
 
