@@ -102,7 +102,8 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
     unbranch(mesh, geometry, frames, s, P, x0, flat, minimizer, m);
   }
   snap_to_dyadic_grid(m.y, none);
-  const std::vector<CGAL::Orientation> o = parameter_orientations(P * m.y + x0);
+  const Eigen::VectorXd corners = P * m.y + x0;
+  const std::vector<CGAL::Orientation> o = parameter_orientations(corners);
   for(std::size_t t = 0; t < o.size(); ++t) {
     if(o[t] == CGAL::POSITIVE) continue;
     m.folds.push_back(std::uint32_t(t));
@@ -111,8 +112,8 @@ Seamless_map compute_seamless_map(const Tetrahedral_mesh_3<Traits>& mesh, const 
   // every tetrahedron positive is not local injectivity: the untangling can wrap the map around an
   // edge (measured: the flange of make_parts.py at 87,415 tetrahedra, 3 such edges, which the
   // continuation then carries to the integer values)
-  if(m.folds.empty()) m.branched = count_branched_edges(mesh, P * m.y + x0);
-  else m.wrapped = wrapped_boundary_vertices(mesh, P * m.y + x0);
+  if(m.folds.empty()) m.branched = count_branched_edges(mesh, corners);
+  else m.wrapped = wrapped_boundary_vertices(mesh, corners);
   return m;
 }
 
