@@ -342,7 +342,8 @@ struct Integer_grid_map_result
   /// Tetrahedra of `seamless_folds` with a corner in `seamless_wrapped_boundary_vertices`.
   std::size_t seamless_folds_at_wrapped_boundary = 0;
   /// True if the untangled seamless map folded nowhere but branched, and was untangled again from the
-  /// energy's minimizer with every variable free (boundary planes and singular lines too), kept if it
+  /// energy's minimizer with every variable free (boundary planes and singular lines too; first those of
+  /// the tetrahedra one ring around the minimizer's folds, then, if it still branches, all), kept if it
   /// folds nowhere and branches less (`seamless_branched_edges` is the count of the map kept).
   bool seamless_unbranching_ran = false;
   /// True if every tetrahedron of the seamless map is positively oriented (exact) and no interior edge
