@@ -42,13 +42,15 @@ struct Fold_repair_input
 
 // The local untangling of the folds of `y` (the continuous variables of the tetrahedra within `rings`
 // rings of them move), if those rings hold at most a quarter of the tetrahedra; `y` is replaced only if
-// the untangling leaves fewer inverted tetrahedra. Returns false if the rings were too large.
+// the untangling leaves fewer inverted tetrahedra, after at most `outer_iterations` updates of the
+// barrier. Returns false if the rings were too large.
 template <class Traits>
-bool untangle_folds_locally(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, int rings, bool& ran, Eigen::VectorXd& y)
+bool untangle_folds_locally(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, int rings, bool& ran, Eigen::VectorXd& y,
+                            int outer_iterations = 50)
 {
   const std::vector<char> region = untangling_region(mesh, in.geometry, in.P * y + in.x0, in.flat, rings);
   if(std::size_t(std::count(region.begin(), region.end(), char(1))) > in.geometry.volumes.size() / 4) return false;
-  ran = untangle_map(in.geometry, in.frames, in.s, in.P, in.x0, in.integer_column, in.flat, y, &region).ran || ran;
+  ran = untangle_map(in.geometry, in.frames, in.s, in.P, in.x0, in.integer_column, in.flat, y, &region, false, outer_iterations).ran || ran;
   return true;
 }
 

@@ -66,38 +66,94 @@ bool trace_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMa
   return true;
 }
 
-// The quantized map `y` made fold-free. First the local untangling of its folds (the map closest to
-// the quantized one, and cheap), kept if it neither folds nor branches. Then, when the seamless map folds
-// nowhere (the structurally flat tetrahedra left out), the continuation from it to the complex's
-// program's lengths when the quantizer kept other values (the program's lengths admit a valid map,
-// QGP3D), then to the quantized values (map_continuation.h): every tetrahedron stays positive on the way,
-// so the map reached neither folds nor branches. Otherwise, or if neither is reached, the rest of the
-// repair of the folds (fold_repair.h) and the re-embedding of the program's lengths (program_reembedding.h).
-template <class Traits, class Options, class Visitor, class Result>
-void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, const Eigen::SparseMatrix<double>& H,
-                        const Eigen::VectorXd& rhs, const Eigen::VectorXd& seamless_y, std::size_t seamless_folds,
-                        const Quantization_result& q, const Options& o, Fixed_variable_solver& solver, Visitor& visitor,
-                        Eigen::VectorXd& y, Result& r)
+// Where the quantization left its separating quantizer to be run (`separation_deferred`: the seamless
+// map folds nowhere and the complex's program offers lengths, `q.alternative`, that the rounded map `y`
+// could not take), first the continuation from the seamless map to those lengths (map_continuation.h),
+// then, if its map is not kept, `separate` (separate_map(), which replaces `q` and `y`). The
+// continuation is what makes the map there (clevis, filleted_block, flange, pillow_block of
+// make_parts.py and s15c: the program's lengths reached without a fold), and the separating quantizer's
+// map was only its fallback's start (the flange at 87,415 tetrahedra: 4 s of separation spared).
+// Returns true if the continuation's map was kept; `mc` holds its report.
+template <class Traits, class Options, class Visitor, class Separate, class Result>
+bool continue_before_separation(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, const Eigen::SparseMatrix<double>& H,
+                                const Eigen::VectorXd& rhs, const Eigen::VectorXd& seamless_y, const Options& o,
+                                Fixed_variable_solver& solver, Visitor& visitor, const Separate& separate,
+                                Quantization_result& q, Map_continuation& mc, Eigen::VectorXd& y, Result& r)
 {
   Map_stage_timer<Visitor> stage{visitor};
-  Map_continuation mc =
-    seamless_folds == 0 && o.untangle && o.maximum_continuation_steps > 0 ? continuation_needed(mesh, in, y) : Map_continuation();
-  const bool local_first = mc.ran && mc.folds_before > 0;
-  if(local_first) {
+  mc = continuation_needed(mesh, in, y);
+  stage.start("continuation");
+  Eigen::VectorXd lengths = y;
+  for(const auto& l : q.alternative) lengths[l.first] = l.second;
+  mc.program_lengths = true;
+  continue_from_seamless_map(mesh, in, H, rhs, seamless_y, lengths, o.maximum_continuation_steps, solver, mc, y);
+  stage.end();
+  if(mc.kept) return true;
+  stage.start("rounding");
+  solver.unfix_all();
+  q = separate(y);
+  r.rounding_seconds += stage.end();
+  return false;
+}
+
+// The quantized map `y` made fold-free. First the local untangling of its folds (the map closest to
+// the quantized one, and cheap), kept if it neither folds nor branches; cheap only if it is short: the
+// repairs it makes take 9 to 15 updates of the barrier (bracket_l_hole of make_parts.py, s09c), and
+// with 50 it failed on the flange of make_parts.py at 87,415 tetrahedra in 9.9 s (257 -> 124 folds), on
+// the way to the continuation, which repaired all. Then, if the separating quantizer was deferred, the
+// continuation to the complex's program's lengths (continue_before_separation()), and the local
+// untangling of the separated map if it differs. Then, when the seamless map folds nowhere (the
+// structurally flat tetrahedra left out), the continuation from it to the complex's program's lengths
+// when the quantizer kept other values (the program's lengths admit a valid map, QGP3D) and they were
+// not tried already, then to the quantized values (map_continuation.h): every tetrahedron stays positive
+// on the way, so the map reached neither folds nor branches. Otherwise, or if neither is reached, the
+// rest of the repair of the folds (fold_repair.h) and the re-embedding of the program's lengths
+// (program_reembedding.h).
+template <class Traits, class Options, class Visitor, class Separate, class Result>
+void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repair_input& in, const Eigen::SparseMatrix<double>& H,
+                        const Eigen::VectorXd& rhs, const Eigen::VectorXd& seamless_y, std::size_t seamless_folds,
+                        bool separation_deferred, const Separate& separate, Quantization_result& q, const Options& o,
+                        Fixed_variable_solver& solver, Visitor& visitor, Eigen::VectorXd& y, Result& r)
+{
+  Map_stage_timer<Visitor> stage{visitor};
+  const bool continuation = seamless_folds == 0 && o.untangle && o.maximum_continuation_steps > 0;
+  Map_continuation mc = continuation ? continuation_needed(mesh, in, y) : Map_continuation();
+  bool local_first = false; // the local untangling of `y` tried
+  auto untangle_first = [&]() {
+    if(!mc.ran || mc.folds_before == 0) return false;
+    local_first = true;
     stage.start("untangling");
     Eigen::VectorXd z = y;
-    const bool repaired = untangle_folds_locally(mesh, in, o.untangling_rings, r.untangling_ran, z) && !continuation_needed(mesh, in, z).ran;
+    const bool repaired = untangle_folds_locally(mesh, in, o.untangling_rings, r.untangling_ran, z, 20) && !continuation_needed(mesh, in, z).ran;
     r.untangling_seconds += stage.end();
-    if(repaired) {
-      y = z;
+    if(repaired) y = z;
+    return repaired;
+  };
+  if(untangle_first()) return;
+  if(separation_deferred) {
+    const Eigen::VectorXd rounded = y;
+    Map_continuation early;
+    if(continue_before_separation(mesh, in, H, rhs, seamless_y, o, solver, visitor, separate, q, early, y, r)) {
+      report_map_continuation(early, r);
       return;
+    }
+    if(!q.success) return;
+    mc = continuation ? continuation_needed(mesh, in, y) : Map_continuation();
+    if(mc.ran) { // the report sums both continuations
+      mc.steps = early.steps;
+      mc.halvings = early.halvings;
+      mc.seconds = early.seconds;
+    }
+    if(y != rounded) {
+      local_first = false;
+      if(untangle_first()) return;
     }
   }
   if(mc.ran) {
     stage.start("continuation");
     Eigen::VectorXd lengths = y;
     for(const auto& l : q.alternative) lengths[l.first] = l.second;
-    mc.program_lengths = lengths != y;
+    mc.program_lengths = lengths != y && !separation_deferred; // tried already if deferred
     if(mc.program_lengths)
       continue_from_seamless_map(mesh, in, H, rhs, seamless_y, lengths, o.maximum_continuation_steps, solver, mc, y);
     if(!mc.kept) {
@@ -177,14 +233,19 @@ void compute_map_stages(const Tetrahedral_mesh_3<Traits>& mesh, const std::vecto
   // the seamless map's own folds (exact), the structurally flat tetrahedra left out
   const std::size_t seamless_folds = std::size_t(
     std::count_if(seamless.folds.begin(), seamless.folds.end(), [&](std::uint32_t t) { return flat[t] == 0; }));
-  const Quantization_result q = seamless.success ? quantize_map(finder, trace, H, rhs, reduced.integer_column, seamless.y, seamless_folds, o, solver, y, r)
-                                                 : Quantization_result{false};
+  bool separation_deferred = seamless_folds == 0 && o.untangle && o.maximum_continuation_steps > 0;
+  Quantization_result q = seamless.success ? quantize_map(finder, trace, H, rhs, reduced.integer_column, seamless.y, seamless_folds, o,
+                                                          solver, y, r, separation_deferred)
+                                           : Quantization_result{false};
   r.rounded_inverted_tetrahedra = count_non_positive_jacobians(geometry, P * y + x0);
   r.rounding_seconds = stage.end();
 
   if(q.success) {
     const Fold_repair_input in{geometry, frames, s, P, x0, reduced.integer_column, flat};
-    make_map_fold_free(mesh, in, H, rhs, seamless.y, seamless_folds, q, o, solver, visitor, y, r);
+    auto separate = [&](Eigen::VectorXd& v) {
+      return separate_map(finder, H, rhs, reduced.integer_column, seamless.y, seamless_folds, o, q.alternative, solver, v, r);
+    };
+    make_map_fold_free(mesh, in, H, rhs, seamless.y, seamless_folds, separation_deferred, separate, q, o, solver, visitor, y, r);
   }
 
   stage.start("sanitizing");

@@ -109,33 +109,24 @@ bool quantize_on_complex(const Finder& finder, const motorcycle::Complex_quantiz
   return false;
 }
 
-// The quantization of the map (`Options`: Map_options; `Result`: Integer_grid_map_result): greedy
-// rounding; where it folds, corrected on the motorcycle complex of the seamless map if there is one
-// (`trace`: Complex_quantizer::Trace); then, where the map still folds, the
-// separating quantizer with `seamless` (the untangled seamless map) as its reference, unless the
-// seamless map has `seamless_folds` of its own; the reports copied into `r`.
+// The separating quantizer (separating_quantizer.h) with `seamless` (the untangled seamless map) as its
+// reference, unless the seamless map has `seamless_folds` of its own; `alternative`: the complex's
+// program's lengths, kept on offer for the re-embedding; the report copied into `r`.
 template <class Finder, class Options, class Result>
-Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex_quantizer::Trace& trace, const Eigen::SparseMatrix<double>& H,
-                                 const Eigen::VectorXd& rhs, const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
-                                 std::size_t seamless_folds, const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r)
+Quantization_result separate_map(const Finder& finder, const Eigen::SparseMatrix<double>& H, const Eigen::VectorXd& rhs,
+                                 const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
+                                 std::size_t seamless_folds, const Options& o,
+                                 const std::vector<std::pair<Eigen::Index, double> >& alternative,
+                                 Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r)
 {
   typedef decltype(r.quantization) Path;
-  if(o.quantization == Path::GREEDY_ROUNDING) {
-    Greedy_rounding_quantizer greedy;
-    return greedy.quantize(H, rhs, integer_column, solver, y);
-  }
-  Quantization_result q;
-  if(o.quantization != Path::SEPARATION_PROGRAM &&
-     quantize_on_complex(finder, trace, H, rhs, integer_column, seamless, seamless_folds, o, solver, y, r, q))
-    return q;
-  const std::vector<std::pair<Eigen::Index, double> > alternative = q.alternative; // the complex's program
   Separating_quantizer separating(
     [&](const Eigen::VectorXd& reference, const Eigen::VectorXd& v) { return finder.violated(reference, v); },
     [&](const Eigen::VectorXd& v) { const auto f = finder.folded(v); return std::size_t(std::count(f.begin(), f.end(), char(1))); });
   separating.time_limit = o.quantization_time_limit;
   separating.seamless = seamless;
   separating.seamless_folds = seamless_folds;
-  q = separating.quantize(H, rhs, integer_column, solver, y);
+  Quantization_result q = separating.quantize(H, rhs, integer_column, solver, y);
   q.alternative = alternative;
   const Separation_report& sr = separating.report;
   r.quantization = sr.used ? Path::SEPARATION_PROGRAM : Path::GREEDY_ROUNDING;
@@ -147,6 +138,35 @@ Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex
   r.separation_variables = sr.variables;
   r.separation_seconds = sr.program_seconds;
   return q;
+}
+
+// The quantization of the map (`Options`: Map_options; `Result`: Integer_grid_map_result): greedy
+// rounding; where it folds, corrected on the motorcycle complex of the seamless map if there is one
+// (`trace`: Complex_quantizer::Trace); then, where the map still folds, the separating quantizer
+// (separate_map()), unless `separation_deferred` is asked and the complex's program offers lengths
+// (`alternative`): then it is left to the caller, true on return, and `y` is the rounded map.
+template <class Finder, class Options, class Result>
+Quantization_result quantize_map(const Finder& finder, const motorcycle::Complex_quantizer::Trace& trace, const Eigen::SparseMatrix<double>& H,
+                                 const Eigen::VectorXd& rhs, const std::vector<char>& integer_column, const Eigen::VectorXd& seamless,
+                                 std::size_t seamless_folds, const Options& o, Fixed_variable_solver& solver, Eigen::VectorXd& y, Result& r,
+                                 bool& separation_deferred)
+{
+  typedef decltype(r.quantization) Path;
+  const bool may_defer = separation_deferred;
+  separation_deferred = false;
+  if(o.quantization == Path::GREEDY_ROUNDING) {
+    Greedy_rounding_quantizer greedy;
+    return greedy.quantize(H, rhs, integer_column, solver, y);
+  }
+  Quantization_result q;
+  if(o.quantization != Path::SEPARATION_PROGRAM &&
+     quantize_on_complex(finder, trace, H, rhs, integer_column, seamless, seamless_folds, o, solver, y, r, q))
+    return q;
+  if(may_defer && !q.alternative.empty()) {
+    separation_deferred = true;
+    return q;
+  }
+  return separate_map(finder, H, rhs, integer_column, seamless, seamless_folds, o, q.alternative, solver, y, r);
 }
 
 // The re-embedding of the complex's lengths in the report (`Result`: Integer_grid_map_result).

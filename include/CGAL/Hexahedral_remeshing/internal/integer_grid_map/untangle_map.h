@@ -35,12 +35,14 @@ struct Map_untangling_result
 // of the tetrahedra they reach (the others keep their map). The result is kept only if it has fewer
 // inverted tetrahedra. With `relax`, a map without inverted tetrahedra is optimized by the barrier (which
 // never inverts one) for one outer iteration instead (the flange's continuation, the whole map relaxed at
-// each step: 7.5 s for its 18 steps, 13 s with two), and kept if it still has none.
+// each step: 7.5 s for its 18 steps, 13 s with two), and kept if it still has none. `outer_iterations`:
+// the barrier's updates at most.
 inline Map_untangling_result untangle_map(const Map_geometry& geometry, const std::vector<Eigen::Matrix3d>& frames,
                                           double s, const Eigen::SparseMatrix<double, Eigen::RowMajor>& P,
                                           const Eigen::VectorXd& x0, const std::vector<char>& integer,
                                           const std::vector<char>& flat, Eigen::VectorXd& y,
-                                          const std::vector<char>* region = nullptr, bool relax = false)
+                                          const std::vector<char>* region = nullptr, bool relax = false,
+                                          int outer_iterations = 50)
 {
   typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
   Map_untangling_result r;
@@ -100,7 +102,7 @@ inline Map_untangling_result untangle_map(const Map_geometry& geometry, const st
   for(std::size_t k = 0; k < free_columns.size(); ++k) z[Eigen::Index(k)] = y[free_columns[k]];
   Foldover_free_options options;
   options.stop_when_untangled = true;
-  options.max_outer_iterations = 50;
+  options.max_outer_iterations = outer_iterations;
   // The barrier's epsilon, not the inner convergence, is what untangles: it falls about 10% per outer
   // iteration whatever the inner loop does, and every outer iteration hit a cap of 300 L-BFGS steps.
   // With 30 the graded acute wedge (65,164 tetrahedra, 19,679 inverted) untangles in 29 outer
