@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,6 +67,14 @@ bool trace_complex(const Tetrahedral_mesh_3<Traits>& mesh, const Eigen::SparseMa
   return true;
 }
 
+// `y` with the integer values of the complex's program (`alternative`: column, value) in place of its own.
+inline Eigen::VectorXd with_program_lengths(const Eigen::VectorXd& y, const std::vector<std::pair<Eigen::Index, double> >& alternative)
+{
+  Eigen::VectorXd lengths = y;
+  for(const auto& l : alternative) lengths[l.first] = l.second;
+  return lengths;
+}
+
 // Where the quantization left its separating quantizer to be run (`separation_deferred`: the seamless
 // map folds nowhere and the complex's program offers lengths, `q.alternative`, that the rounded map `y`
 // could not take), first the continuation from the seamless map to those lengths (map_continuation.h),
@@ -83,8 +92,7 @@ bool continue_before_separation(const Tetrahedral_mesh_3<Traits>& mesh, const Fo
   Map_stage_timer<Visitor> stage{visitor};
   mc = continuation_needed(mesh, in, y);
   stage.start("continuation");
-  Eigen::VectorXd lengths = y;
-  for(const auto& l : q.alternative) lengths[l.first] = l.second;
+  const Eigen::VectorXd lengths = with_program_lengths(y, q.alternative);
   mc.program_lengths = true;
   continue_from_seamless_map(mesh, in, H, rhs, seamless_y, lengths, o.maximum_continuation_steps, solver, mc, y);
   stage.end();
@@ -116,6 +124,7 @@ void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repai
                         Fixed_variable_solver& solver, Visitor& visitor, Eigen::VectorXd& y, Result& r)
 {
   Map_stage_timer<Visitor> stage{visitor};
+  constexpr int local_first_barrier_updates = 20;
   const bool continuation = seamless_folds == 0 && o.untangle && o.maximum_continuation_steps > 0;
   Map_continuation mc = continuation ? continuation_needed(mesh, in, y) : Map_continuation();
   bool local_first = false; // the local untangling of `y` tried
@@ -124,7 +133,7 @@ void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repai
     local_first = true;
     stage.start("untangling");
     Eigen::VectorXd z = y;
-    const bool repaired = untangle_folds_locally(mesh, in, o.untangling_rings, r.untangling_ran, z, 20) && !continuation_needed(mesh, in, z).ran;
+    const bool repaired = untangle_folds_locally(mesh, in, o.untangling_rings, r.untangling_ran, z, local_first_barrier_updates) && !continuation_needed(mesh, in, z).ran;
     r.untangling_seconds += stage.end();
     if(repaired) y = z;
     return repaired;
@@ -151,8 +160,7 @@ void make_map_fold_free(const Tetrahedral_mesh_3<Traits>& mesh, const Fold_repai
   }
   if(mc.ran) {
     stage.start("continuation");
-    Eigen::VectorXd lengths = y;
-    for(const auto& l : q.alternative) lengths[l.first] = l.second;
+    const Eigen::VectorXd lengths = with_program_lengths(y, q.alternative);
     mc.program_lengths = lengths != y && !separation_deferred; // tried already if deferred
     if(mc.program_lengths)
       continue_from_seamless_map(mesh, in, H, rhs, seamless_y, lengths, o.maximum_continuation_steps, solver, mc, y);
