@@ -412,6 +412,7 @@ inline int command_frames(const Arguments& args)
         .value("constraint_error", r.realignment.constraint_error)
         .value("changed_matchings", r.realignment.changed_matchings)
         .value("changed_edges", r.realignment.changed_edges)
+        .value("broken_ties", r.realignment.broken_ties)
         .value("solver_iterations", r.realignment.solver_iterations)
         .end();
     json.begin("seconds")

@@ -12,10 +12,12 @@
 #include <CGAL/Hexahedral_remeshing/frame_field.h>
 #include <CGAL/Hexahedral_remeshing/internal/realignment/realignment_system.h>
 #include <CGAL/Hexahedral_remeshing/internal/realignment/solve_realignment.h>
+#include <CGAL/Hexahedral_remeshing/internal/realignment/break_matching_ties.h>
 #include <CGAL/Hexahedral_remeshing/internal/realignment/project_to_rotations.h>
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -37,6 +39,10 @@ struct Realignment_result
   double solver_residual = 0;
   /// Interior faces whose recomputed matching differs from the fixed one (0 expected).
   std::size_t changed_matchings = 0;
+  /// Interior faces where the projected frames were as close to another matching as to the fixed one
+  /// (two constrained tetrahedra at a 45-degree turn of the normals, a CAD chamfer): one of the two
+  /// frames turned by 1e-6 radian towards the fixed matching, so that the frames alone give it.
+  std::size_t broken_ties = 0;
   /// Interior edges whose type (regular, valence 3, 5, improper) changed (0 expected).
   std::size_t changed_edges = 0;
   /// Seconds.
@@ -103,6 +109,16 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     internal::project_to_rotations(system, E, normals, directions, frames, result.constraint_error,
                                    result.alignment_error);
   }
+  std::vector<std::size_t> turned = internal::break_matching_ties(mesh, frames, matchings);
+  result.broken_ties = turned.size();
+  std::sort(turned.begin(), turned.end());
+  if(!turned.empty()) // the turned frames' axes left their normals by 1e-6 radian at most
+    for(std::size_t b = 0; b < normals.size(); ++b) {
+      const std::size_t t = std::size_t(mesh.boundary_triangle_tetrahedron(typename Tetrahedral_mesh_3<Traits>::Index(b)));
+      if(!std::binary_search(turned.begin(), turned.end(), t)) continue;
+      const Eigen::Vector3d c = frames[t].transpose() * normals[b];
+      result.alignment_error = (std::max)(result.alignment_error, std::abs(1.0 - c.cwiseAbs().maxCoeff()));
+    }
 
   // Post-checks: matchings and singular graph must be unchanged.
   const Matchings after = compute_matchings(mesh, frames);
