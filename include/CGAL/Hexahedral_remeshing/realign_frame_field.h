@@ -41,7 +41,7 @@ struct Realignment_result
   std::size_t changed_matchings = 0;
   /// Interior faces where the projected frames were as close to another matching as to the fixed one
   /// (two constrained tetrahedra at a 45-degree turn of the normals, a CAD chamfer): one of the two
-  /// frames turned by 1e-6 radian towards the fixed matching, so that the frames alone give it.
+  /// frames turned by 1e-5 radian towards the fixed matching, so that the frames alone give it.
   std::size_t broken_ties = 0;
   /// Interior edges whose type (regular, valence 3, 5, improper) changed (0 expected).
   std::size_t changed_edges = 0;
@@ -109,19 +109,24 @@ Realignment_result realign_frame_field(const Tetrahedral_mesh_3<Traits>& mesh, s
     internal::project_to_rotations(system, E, normals, directions, frames, result.constraint_error,
                                    result.alignment_error);
   }
-  std::vector<std::size_t> turned = internal::break_matching_ties(mesh, frames, matchings);
+  // Post-checks: matchings and singular graph must be unchanged; ties broken first (break_matching_ties.h)
+  Matchings after = compute_matchings(mesh, frames);
+  std::vector<std::size_t> disagreeing;
+  for(std::size_t f = 0; f < after.face_matching.size(); ++f)
+    if(after.face_matching[f] != matchings.face_matching[f]) disagreeing.push_back(f);
+  std::vector<std::size_t> turned = internal::break_matching_ties(mesh, frames, matchings, disagreeing);
   result.broken_ties = turned.size();
-  std::sort(turned.begin(), turned.end());
-  if(!turned.empty()) // the turned frames' axes left their normals by 1e-6 radian at most
+  if(!turned.empty()) {
+    after = compute_matchings(mesh, frames);
+    // the turned frames' axes left their normals by 1e-5 radian at most
+    std::sort(turned.begin(), turned.end());
     for(std::size_t b = 0; b < normals.size(); ++b) {
       const std::size_t t = std::size_t(mesh.boundary_triangle_tetrahedron(typename Tetrahedral_mesh_3<Traits>::Index(b)));
       if(!std::binary_search(turned.begin(), turned.end(), t)) continue;
       const Eigen::Vector3d c = frames[t].transpose() * normals[b];
       result.alignment_error = (std::max)(result.alignment_error, std::abs(1.0 - c.cwiseAbs().maxCoeff()));
     }
-
-  // Post-checks: matchings and singular graph must be unchanged.
-  const Matchings after = compute_matchings(mesh, frames);
+  }
   for(std::size_t f = 0; f < after.face_matching.size(); ++f)
     result.changed_matchings += after.face_matching[f] != matchings.face_matching[f];
   const Singularity_graph graph_after = compute_singularity_graph(mesh, frames, matchings);

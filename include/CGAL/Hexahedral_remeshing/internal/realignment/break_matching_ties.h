@@ -77,15 +77,17 @@ bool turn_towards_kept(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen
   return true;
 }
 
-// The faces whose closest matching is within `tie` (in the trace) of the kept one but not it: one of
-// their two frames turned by `angle` towards the kept matching (see the file's comment). Returns the
-// tetrahedra turned, in increasing face order.
+// Of the `disagreeing` faces (increasing; their closest matching is not the kept one), those whose
+// closest matching is within `tie` (in the trace) of the kept one: one of their two frames turned by
+// `angle` towards the kept matching (see the file's comment). A face that agrees with the kept
+// matchings never comes to disagree, since such a turn is undone. Returns the tetrahedra turned.
 template <class Traits>
 std::vector<std::size_t> break_matching_ties(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
-                                             const Matchings& matchings, double tie = 1e-5, double angle = 1e-5)
+                                             const Matchings& matchings, const std::vector<std::size_t>& disagreeing,
+                                             double tie = 1e-5, double angle = 1e-5)
 {
   std::vector<std::size_t> turned;
-  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f) {
+  for(std::size_t f : disagreeing) {
     const auto& ft = mesh.face_tetrahedra(typename Tetrahedral_mesh_3<Traits>::Index(f));
     if(ft[1] == Tetrahedral_mesh_3<Traits>::null_index || face_agrees(mesh, frames, matchings, f)) continue;
     const Octahedral_matching closest = closest_matching(frames[ft[0]], frames[ft[1]]);
