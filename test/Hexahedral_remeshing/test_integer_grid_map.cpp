@@ -309,6 +309,84 @@ TEST(IntegerGridMapParts, EliminationKeepsIntegersInteger)
   EXPECT_EQ(el.add_row({T{t1, 1}, T{t2, -1}}, 1), HR::internal::Constraint_elimination::INCONSISTENT);
 }
 
+// The matrix of a grid Laplacian on n^3 variables (variable (i n + j) n + k), the weight of each grid
+// edge from weight(), plus 0.01 on the diagonal (positive definite).
+template <class Weight>
+Eigen::SparseMatrix<double> grid_laplacian(int n, Weight weight)
+{
+  auto id = [&](int i, int j, int k) { return (i * n + j) * n + k; };
+  std::vector<Eigen::Triplet<double> > tr;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      for(int k = 0; k < n; ++k) {
+        const int a = id(i, j, k);
+        tr.emplace_back(a, a, 0.01);
+        const int nb[3] = {i + 1 < n ? id(i + 1, j, k) : -1, j + 1 < n ? id(i, j + 1, k) : -1, k + 1 < n ? id(i, j, k + 1) : -1};
+        for(int b : nb)
+          if(b >= 0) {
+            const double w = weight();
+            tr.emplace_back(a, a, w); tr.emplace_back(b, b, w); tr.emplace_back(a, b, -w); tr.emplace_back(b, a, -w);
+          }
+      }
+  Eigen::SparseMatrix<double> H(n * n * n, n * n * n);
+  H.setFromTriplets(tr.begin(), tr.end());
+  return H;
+}
+
+// The solver with fixed variables factorizes again only when the matrix or the set of fixed variables
+// changed: a new value of a fixed variable, or the same matrix given again, is solved with the factor in
+// hand, and gives what a fresh solver gives; every solution is checked from its optimality conditions
+// (the gradient H y - rhs vanishes at the free variables, the fixed ones hold their values).
+TEST(IntegerGridMapParts, FixedVariableSolverFactorizesOnlyWhatChanged)
+{
+  const int n = 6, N = n * n * n;
+  const Eigen::SparseMatrix<double> H = grid_laplacian(n, [] { return 1.0; });
+  Eigen::SparseMatrix<double> H2 = H;
+  H2.coeffRef(0, 0) += 1.0; // same pattern, another value
+  Eigen::VectorXd rhs(N);
+  for(int a = 0; a < N; ++a) rhs[a] = 0.01 * std::sin(double(a));
+  auto optimal = [&](const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& y, const std::map<int, double>& fixed) {
+    const Eigen::VectorXd g = M * y - rhs;
+    for(int a = 0; a < N; ++a) {
+      const auto f = fixed.find(a);
+      if(f != fixed.end() ? y[a] != f->second : std::abs(g[a]) > 1e-9) return false;
+    }
+    return true;
+  };
+  auto fresh = [&](const Eigen::SparseMatrix<double>& M, const std::map<int, double>& fixed) {
+    HR::internal::Fixed_variable_solver s;
+    s.set_system(M, rhs);
+    for(const auto& f : fixed) s.fix(f.first, f.second);
+    Eigen::VectorXd y;
+    EXPECT_TRUE(s.solve(y));
+    return y;
+  };
+  HR::internal::Fixed_variable_solver solver;
+  solver.set_system(H, rhs);
+  solver.fix(3, 1.0);
+  Eigen::VectorXd y;
+  ASSERT_TRUE(solver.solve(y));
+  EXPECT_TRUE(optimal(H, y, {{3, 1.0}}));
+  EXPECT_EQ(solver.factorizations(), 1);
+  solver.fix(3, 2.0); // another value, the same set
+  ASSERT_TRUE(solver.solve(y));
+  EXPECT_EQ(solver.factorizations(), 1);
+  EXPECT_TRUE(optimal(H, y, {{3, 2.0}}));
+  EXPECT_EQ(y, fresh(H, {{3, 2.0}}));
+  solver.set_system(H, rhs); // the same matrix again
+  ASSERT_TRUE(solver.solve(y));
+  EXPECT_EQ(solver.factorizations(), 1);
+  solver.fix(N - 1, -1.0); // one more fixed variable
+  ASSERT_TRUE(solver.solve(y));
+  EXPECT_EQ(solver.factorizations(), 2);
+  EXPECT_TRUE(optimal(H, y, {{3, 2.0}, {N - 1, -1.0}}));
+  solver.set_system(H2, rhs); // new values in the same pattern
+  ASSERT_TRUE(solver.solve(y));
+  EXPECT_EQ(solver.factorizations(), 3);
+  EXPECT_TRUE(optimal(H2, y, {{3, 2.0}, {N - 1, -1.0}}));
+  EXPECT_EQ(y, fresh(H2, {{3, 2.0}, {N - 1, -1.0}}));
+}
+
 // The greedy rounding on the reduced system of the integer variables (one factorization) rounds the
 // same variables to the same integers, in the same rounds, as the rounding that re-factorizes the
 // whole system every round; its minimizers are checked from their optimality conditions. The system:
@@ -318,23 +396,9 @@ TEST(IntegerGridMapParts, ReducedRoundingIsTheSparseRounding)
 {
   const int n = 12, N = n * n * n;
   auto id = [&](int i, int j, int k) { return (i * n + j) * n + k; };
-  std::vector<Eigen::Triplet<double> > tr;
   std::mt19937 random(7);
   std::uniform_real_distribution<double> uniform(0.5, 1.5);
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      for(int k = 0; k < n; ++k) {
-        const int a = id(i, j, k);
-        tr.emplace_back(a, a, 0.01);
-        const int nb[3] = {i + 1 < n ? id(i + 1, j, k) : -1, j + 1 < n ? id(i, j + 1, k) : -1, k + 1 < n ? id(i, j, k + 1) : -1};
-        for(int b : nb)
-          if(b >= 0) {
-            const double w = uniform(random);
-            tr.emplace_back(a, a, w); tr.emplace_back(b, b, w); tr.emplace_back(a, b, -w); tr.emplace_back(b, a, -w);
-          }
-      }
-  Eigen::SparseMatrix<double> H(N, N);
-  H.setFromTriplets(tr.begin(), tr.end());
+  const Eigen::SparseMatrix<double> H = grid_laplacian(n, [&] { return uniform(random); });
   Eigen::VectorXd rhs(N);
   std::uniform_real_distribution<double> source(-1.0, 1.0);
   // the diagonal 0.01 pulls y towards a ramp over about 20 integers, the noise makes it uneven

@@ -39,6 +39,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -105,35 +106,70 @@ struct Foldover_free_result
 // Energy, gradient and determinants on the unknowns y; the LBFGS++ objective.
 class Foldover_free_evaluator
 {
+  typedef Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator Row_iterator;
+
 public:
   Foldover_free_evaluator(const Foldover_free_problem& p, double theta)
     : m_p(p), m_theta(theta), m_Pt(p.P.transpose()),
       m_energy(p.number_of_elements()), m_det(p.number_of_elements()),
-      m_gx(Eigen::VectorXd::Zero(p.x0.size()))
+      m_gx(Eigen::VectorXd::Zero(p.x0.size())), m_unit_column(std::size_t(p.P.rows()), 0)
   {
     double total = 0;
     for(double w : p.w) total += w;
     // the normalized energy is O(1) whatever the mesh size, so that tolerances are absolute
     m_scale = total > 0 ? 1. / total : 1.;
+    for(Eigen::Index i = 0; i < p.P.rows(); ++i) {
+      Row_iterator it(p.P, i);
+      if(!it) continue;
+      const double v = it.value();
+      const std::int64_t column = std::int64_t(it.col()) + 1;
+      if(++it || !(v == 1. || v == -1.) || column > std::numeric_limits<std::int32_t>::max()) continue;
+      m_unit_column[std::size_t(i)] = std::int32_t(v > 0 ? column : -column);
+    }
   }
 
   double epsilon = 1.;
 
-  Eigen::Matrix3d K(const Eigen::VectorXd& x, std::size_t e) const
+  Eigen::Matrix3d K(const Eigen::VectorXd& x, std::size_t e) const { return K(x.data() + 12 * e, e); }
+
+  // K_e from the 12 corner values c of element e.
+  Eigen::Matrix3d K(const double* c, std::size_t e) const
   {
-    const double* c = x.data() + 12 * e;
     Eigen::Matrix3d D;
     for(int k = 0; k < 3; ++k)
       for(int r = 0; r < 3; ++r) D(r, k) = c[3 * (k + 1) + r] - c[r];
     return D * m_p.M[e];
   }
 
+  // Row i of x = P y + x0, with the arithmetic of Eigen's product (a sum from 0 over the row's entries,
+  // then x0 added): the same bits as `P * y + x0`. Most rows of a map's P are one variable with
+  // coefficient +-1 (a corner value is a variable of its chart or its opposite): those are read from
+  // one signed index instead of the row's index, column and value (corners() was 13% of the flange's
+  // map, memory-bound).
+  double corner(Eigen::Index i, const Eigen::VectorXd& y) const
+  {
+    const std::int32_t u = m_unit_column[std::size_t(i)];
+    double sum = 0;
+    if(u > 0) sum += y[u - 1];
+    else if(u < 0) sum += -y[-u - 1];
+    else
+      for(Row_iterator it(m_p.P, i); it; ++it) sum += it.value() * y[it.col()];
+    return (0. + sum) + m_p.x0[i];
+  }
+
+  // The 12 corner values of element e.
+  void element_corners(const Eigen::VectorXd& y, std::size_t e, double* c) const
+  {
+    for(int i = 0; i < 12; ++i) c[i] = corner(Eigen::Index(12 * e + std::size_t(i)), y);
+  }
+
   // x = P y + x0, into x's storage (large meshes: a fresh vector per evaluation costs page faults)
   void corners(const Eigen::VectorXd& y, Eigen::VectorXd& x) const
   {
     x.resize(m_p.x0.size());
-    x.noalias() = m_p.P * y;
-    x += m_p.x0;
+    const std::ptrdiff_t E = std::ptrdiff_t(m_p.number_of_elements());
+#pragma omp parallel for schedule(static) if(E >= parallel_elements)
+    for(std::ptrdiff_t e = 0; e < E; ++e) element_corners(y, std::size_t(e), x.data() + 12 * e);
   }
 
   // Below this many elements (a local untangling around a few folds) the loops run on one thread:
@@ -158,12 +194,13 @@ public:
   // normalized energy (sum_e w_e f_e / sum_e w_e) and its gradient with respect to y
   double operator()(const Eigen::VectorXd& y, Eigen::VectorXd& grad)
   {
-    corners(y, m_x);
     const std::ptrdiff_t E = std::ptrdiff_t(m_p.number_of_elements());
 #pragma omp parallel for schedule(static) if(E >= parallel_elements)
     for(std::ptrdiff_t e = 0; e < E; ++e) {
+      double c[12];
+      element_corners(y, std::size_t(e), c);
       Eigen::Matrix3d G;
-      const double f = foldover_free_element_energy(K(m_x, std::size_t(e)), epsilon, m_theta, &G);
+      const double f = foldover_free_element_energy(K(c, std::size_t(e)), epsilon, m_theta, &G);
       const double w = m_p.w[e] * m_scale;
       m_energy[e] = w * f;
       // K = D M: dF/dD = G M^T; corners 1..3 get its columns, corner 0 minus their sum
@@ -211,7 +248,9 @@ private:
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_Pt; // row-major P^T: the product is a per-row sum
   std::vector<double> m_energy;
   std::vector<double> m_det;
-  Eigen::VectorXd m_x, m_gx;
+  Eigen::VectorXd m_gx;
+  // per row of P: +-(column + 1) if the row is that one column with coefficient +-1, else 0
+  std::vector<std::int32_t> m_unit_column;
   double m_best_energy = std::numeric_limits<double>::infinity();
   Eigen::VectorXd m_best_y;
   std::size_t m_evaluations = 0;
