@@ -150,8 +150,8 @@ public:
   {
     const std::int32_t u = m_unit_column[std::size_t(i)];
     double sum = 0;
-    if(u > 0) sum += y[u - 1];
-    else if(u < 0) sum += -y[-u - 1];
+    if(u != 0) // without a branch on the sign, which the rows' order does not predict
+      sum += (u < 0 ? -1. : 1.) * y[(u < 0 ? -u : u) - 1];
     else
       for(Row_iterator it(m_p.P, i); it; ++it) sum += it.value() * y[it.col()];
     return (0. + sum) + m_p.x0[i];
