@@ -396,8 +396,8 @@ TEST(FoldoverFreeMap, TwoChartsCoupledByATransition)
 
 // The evaluator's gradient on a P that mixes the rows of a map: +-1 (a variable or its opposite),
 // general (a transition's combination of two variables) and empty (a value fixed in x0). Against the
-// chain rule written with Eigen (P^T times the per-element derivatives, the same bits: the scatter
-// keeps the product's order of summation) and against central differences of the energy.
+// chain rule written out (P^T times the per-element derivatives, the same bits) and against central
+// differences of the energy.
 TEST(FoldoverFreeMap, EvaluatorGradientIsTheChainRule)
 {
   const Tet_grid g(3);
