@@ -39,6 +39,25 @@ inline Eigen::Matrix3d foldover_free_cofactor(const Eigen::Matrix3d& K)
   return C;
 }
 
+// The energy of an element from det K and tr(K^T K), and the two coefficients of its derivative:
+// df/dK = a K + b cof(K). Shared by the textbook and the fused evaluation, which so compute the same bits.
+struct Foldover_free_scalars
+{
+  double energy, a, b;
+};
+
+inline Foldover_free_scalars foldover_free_scalars(double det, double trace, double eps, double theta)
+{
+  const double c1 = foldover_free_chi(det, eps);
+  const double c2 = std::cbrt(c1 * c1);
+  const double f = trace / c2;
+  const double g = (1. + det * det) / c1;
+  const double c3 = foldover_free_chi_derivative(det, eps);
+  // d f / dK = 2K / chi^{2/3} - (2/3) f chi'/chi cof(K); d g / dK = (2 det - g chi') / chi cof(K)
+  return {(1. - theta) * f + theta * g, (1. - theta) * (2. / c2),
+          (1. - theta) * (-2. * f * c3 / (3. * c1)) + theta * (2. * det - g * c3) / c1};
+}
+
 // Energy of one element with Jacobian-like matrix K (K = I is the ideal element):
 //   f = (1 - theta) tr(K^T K) / chi(det K, eps)^{2/3} + theta (det^2 K + 1) / chi(det K, eps).
 // The first term measures the shape (scale invariant: minimal for similarities), the second the
@@ -48,19 +67,9 @@ inline double foldover_free_element_energy(const Eigen::Matrix3d& K, double eps,
                                            Eigen::Matrix3d* dK = nullptr)
 {
   const Eigen::Matrix3d C = foldover_free_cofactor(K);
-  const double det = K.col(0).dot(C.col(0));
-  const double c1 = foldover_free_chi(det, eps);
-  const double c2 = std::cbrt(c1 * c1);
-  const double trace = K.squaredNorm();
-  const double f = trace / c2;
-  const double g = (1. + det * det) / c1;
-  if(dK != nullptr) {
-    const double c3 = foldover_free_chi_derivative(det, eps);
-    // d f / dK = 2K / chi^{2/3} - (2/3) f chi'/chi cof(K); d g / dK = (2 det - g chi') / chi cof(K)
-    *dK = (1. - theta) * (2. / c2) * K
-          + ((1. - theta) * (-2. * f * c3 / (3. * c1)) + theta * (2. * det - g * c3) / c1) * C;
-  }
-  return (1. - theta) * f + theta * g;
+  const Foldover_free_scalars s = foldover_free_scalars(K.col(0).dot(C.col(0)), K.squaredNorm(), eps, theta);
+  if(dK != nullptr) *dK = s.a * K + s.b * C;
+  return s.energy;
 }
 
 // The foldover-free untangling's work on one tetrahedron (foldover_free_map.h), fused and unrolled:
@@ -91,17 +100,11 @@ inline double foldover_free_fused_element(const double* c, const Eigen::Matrix3d
                        k2[1] * k0[2] - k2[2] * k0[1], k2[2] * k0[0] - k2[0] * k0[2], k2[0] * k0[1] - k2[1] * k0[0],
                        k0[1] * k1[2] - k0[2] * k1[1], k0[2] * k1[0] - k0[0] * k1[2], k0[0] * k1[1] - k0[1] * k1[0]};
   const double det = head(k0[0], k0[1], k0[2], C[0], C[1], C[2]);
-  const double c1 = foldover_free_chi(det, eps);
-  const double c2 = std::cbrt(c1 * c1);
   const double trace = ((K[0] * K[0] + K[2] * K[2]) + (K[4] * K[4] + K[6] * K[6])) +
                        ((K[1] * K[1] + K[3] * K[3]) + (K[5] * K[5] + K[7] * K[7])) + K[8] * K[8];
-  const double f = trace / c2;
-  const double v = (1. + det * det) / c1;
-  const double c3 = foldover_free_chi_derivative(det, eps);
-  const double a = (1. - theta) * (2. / c2);
-  const double b = (1. - theta) * (-2. * f * c3 / (3. * c1)) + theta * (2. * det - v * c3) / c1;
+  const Foldover_free_scalars s = foldover_free_scalars(det, trace, eps, theta);
   double W[9]; // w df/dK
-  for(int i = 0; i < 9; ++i) W[i] = w * (a * K[i] + b * C[i]);
+  for(int i = 0; i < 9; ++i) W[i] = w * (s.a * K[i] + s.b * C[i]);
   // K = D M: d/dD = W M^T; corners 1..3 get its columns, corner 0 minus their sum
   for(int k = 0; k < 3; ++k) {
     const double m0 = M[k], m1 = M[3 + k], m2 = M[6 + k];
@@ -110,7 +113,7 @@ inline double foldover_free_fused_element(const double* c, const Eigen::Matrix3d
     g[3 * (k + 1) + 2] = tail(W[2], W[5], W[8], m0, m1, m2);
   }
   for(int r = 0; r < 3; ++r) g[r] = -(g[3 + r] + g[6 + r] + g[9 + r]);
-  return w * ((1. - theta) * f + theta * v);
+  return w * s.energy;
 }
 
 } // namespace internal
