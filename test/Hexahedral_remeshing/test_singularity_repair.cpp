@@ -1060,6 +1060,44 @@ TEST(Meshability, CurveEndPulledOntoTheFaceItCrosses)
               r.repair.pulled_curve_ends);
 }
 
+// Rounds of repair: the icosahedron of the shared data (n15c) keeps 2 jogs after one round of surgery
+// and re-optimized frames; on those frames the surgery finds what it could not find before. Counted
+// independently (the frames' holonomies, with the kept matchings and from the frames alone): the rounds
+// leave fewer jogs than one round, add no improper edge, zipper or dangling end in either reading, and
+// keep every achieved boundary valence; the report counts the rounds kept.
+TEST(Meshability, RoundsRepairWhatTheFirstLeaves)
+{
+  const std::string f = std::string(HEXREM_SHARED_DATA_DIR) + "/hexme/n15c_icosahedron.vtk";
+  if(!fs::exists(f)) GTEST_SKIP() << "../shared/data not present";
+  Mesh m;
+  HR::IO::read_tetrahedral_mesh(f, m, HR::parameters::split_boundary_chords(true));
+  const auto one = HR::compute_frame_field_pipeline(m, HR::parameters::maximum_repair_rounds(1));
+  const auto r = HR::compute_frame_field_pipeline(m);
+  const auto kept_one = evaluate_matchings(m, one.frames, one.matchings);
+  const auto kept = evaluate_matchings(m, r.frames, r.matchings);
+  const auto alone_one = independent::evaluate_frames(points_of(m), tets_of(m), one.frames);
+  const auto alone = independent::evaluate_frames(points_of(m), tets_of(m), r.frames);
+  std::printf("n15c: rounds %d; jogs with the kept matchings %zu -> %zu, from the frames alone %zu -> %zu; improper, zippers, "
+              "dangling ends %zu -> %zu (frames alone %zu -> %zu)\n", r.repair.rounds, kept_one.jogs, kept.jogs, alone_one.jogs,
+              alone.jogs, kept_one.improper + kept_one.zippers + kept_one.dangling, kept.improper + kept.zippers + kept.dangling,
+              alone_one.improper + alone_one.zippers + alone_one.dangling, alone.improper + alone.zippers + alone.dangling);
+  EXPECT_EQ(one.repair.rounds, 1);
+  EXPECT_GE(r.repair.rounds, 2);
+  EXPECT_GE(kept_one.jogs, 1u);
+  EXPECT_LT(kept.jogs, kept_one.jogs);
+  EXPECT_LE(alone.jogs, alone_one.jogs);
+  EXPECT_LE(kept.improper + kept.zippers + kept.dangling, kept_one.improper + kept_one.zippers + kept_one.dangling);
+  EXPECT_LE(alone.improper + alone.zippers + alone.dangling, alone_one.improper + alone_one.zippers + alone_one.dangling);
+  EXPECT_LE(kept.lenient.defects(), kept_one.lenient.defects());
+  EXPECT_EQ(r.boundary_valences.matched, one.boundary_valences.matched);
+  EXPECT_EQ(r.boundary_valences.mismatched, one.boundary_valences.mismatched);
+  // the report: the first round's defects before, the last round's after, the changes of all rounds
+  EXPECT_TRUE(r.repair.accepted);
+  EXPECT_LT(r.repair.graph_defects_after, one.repair.graph_defects_after);
+  EXPECT_EQ(r.repair.graph_defects_before, one.repair.graph_defects_before);
+  EXPECT_GE(r.repair.applied(), one.repair.applied());
+}
+
 // The crossed cylinders of the shared data: the field of step 3 has a zipper (a valence-3 curve turning
 // into a valence-5 one) and 31 jogs. With the repair, counted independently: the jogs are about halved
 // with the kept matchings and from the frames alone, no zipper is added, and the frames alone show none

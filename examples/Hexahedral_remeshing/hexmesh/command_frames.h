@@ -227,7 +227,8 @@ inline void print_meshability(std::ostream& out, const CGAL::Hexahedral_remeshin
     std::ostringstream ops;
     for(const auto& o : r.repair.operations) if(o.second > 0) ops << (ops.tellp() > 0 ? ", " : "") << o.first << " " << o.second;
     out << "  repair              " << r.repair.changed_faces << " face matchings changed (" << (ops.tellp() > 0 ? ops.str() : std::string("no operation"))
-        << "), " << std::fixed << std::setprecision(3) << r.repair.seconds << " s"
+        << "), " << (r.repair.rounds > 1 ? std::to_string(r.repair.rounds) + " rounds, " : std::string())
+        << std::fixed << std::setprecision(3) << r.repair.seconds << " s"
         << (r.repair.without_sweeps ? "; without the sweeps (with them: not kept)" : "")
         << (r.repair.changed_faces > 0 && !r.repair.accepted ? "; not kept (no better, or more non-meshable locations for the map)" : "")
         << "\n" << std::defaultfloat;
@@ -258,7 +259,7 @@ inline void add_meshability(Json& json, const CGAL::Hexahedral_remeshing::Frame_
   add_meshability_counts(json, "final", r.meshability.counts);
   json.value("final_graph_defects", r.meshability.graph_defects());
   json.begin("repair").value("performed", r.repaired).value("accepted", r.repaired && r.repair.accepted)
-    .value("without_sweeps", r.repair.without_sweeps).value("changed_faces", r.repair.changed_faces);
+    .value("without_sweeps", r.repair.without_sweeps).value("rounds", r.repair.rounds).value("changed_faces", r.repair.changed_faces);
   for(const auto& o : r.repair.operations) json.value(o.first, o.second);
   json.begin("hex_scale").value("clusters", r.repair.hex_scale_clusters).value("removed", r.repair.simplified_clusters);
   for(const auto& k : r.repair.hex_scale_kept) json.value(k.first, k.second);

@@ -146,7 +146,9 @@ struct Frame_field_pipeline_result
 ///       the frames are re-optimized with the repaired matchings fixed (the realignment's solver), and the
 ///       result is kept only if it is no worse with the kept matchings and from the frames alone, and
 ///       better in one, and the non-meshable locations the map reports of it (improper edges, dangling ends,
-///       zippers of `compute_singularity_graph()`) do not grow (`Singularity_repair_result::accepted`); without realignment, the matchings of the
+///       zippers of `compute_singularity_graph()`) do not grow (`Singularity_repair_result::accepted`); rounds of
+///       this follow, each from the field the last one kept, until one is not kept (`maximum_repair_rounds`,
+///       `Singularity_repair_result::rounds`); without realignment, the matchings of the
 ///       field of step 3 are repaired in place}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`, except with `baseline(true)` (the paper's comparison field, kept as it is)}

@@ -36,6 +36,7 @@ enum singularity_repair_t { singularity_repair };
 enum maximum_repair_steps_t { maximum_repair_steps };
 enum repair_hex_edge_length_t { repair_hex_edge_length };
 enum repair_sweeps_t { repair_sweeps };
+enum maximum_repair_rounds_t { maximum_repair_rounds };
 } // namespace internal_np
 
 namespace parameters {
@@ -52,11 +53,15 @@ template <class T> unspecified_type repair_hex_edge_length(const T& value);
 /// Repair: after the short changes, sweep the curves that no short change repairs (`"sweep_curve"`;
 /// `bool`, default `true`).
 template <class T> unspecified_type repair_sweeps(const T& value);
+/// Pipeline: rounds of repair of the realigned field at most (surgery, then the frames re-optimized),
+/// each from the field the previous one kept, until one is not kept (`int`, default `8`).
+template <class T> unspecified_type maximum_repair_rounds(const T& value);
 #else
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(singularity_repair)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_repair_steps)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(repair_hex_edge_length)
 CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(repair_sweeps)
+CGAL_HEXAHEDRAL_REMESHING_NAMED_PARAMETER(maximum_repair_rounds)
 #endif
 } // namespace parameters
 
@@ -89,9 +94,17 @@ struct Singularity_repair_result
   /// Changes of `"pull_end"` (also in `operations`): curve ends in boundary planes pulled onto the faces
   /// their curves cross, tried once the sweeps are done and only if such ends are left.
   std::size_t pulled_curve_ends = 0;
-  /// In the pipeline: the repair with the sweeps was not kept, and the one without them was tried
-  /// (and kept if `accepted`).
+  /// In the pipeline: the first round's repair with the sweeps was not kept, and the one without them
+  /// was tried (and kept if `accepted`).
   bool without_sweeps = false;
+  /// In the pipeline: rounds kept (named parameter `maximum_repair_rounds`). A round is the surgery
+  /// on the field the previous one kept, with that field's re-optimized frames, then the frames
+  /// re-optimized again; the rounds stop at the first one not kept. `operations`, `swept_curves`,
+  /// `pulled_curve_ends` and `simplified_clusters` add up the rounds kept (the first round's if none
+  /// is); `defects_before`, `hex_scale_clusters` and `hex_scale_kept` are the first round's,
+  /// `defects_after` the last round kept's. `repair_singularity_graph()` alone sets it to 1 if it
+  /// changed a face, 0 otherwise.
+  int rounds = 0;
   /// In the pipeline (`compute_frame_field_pipeline()`), which repairs the realigned field and
   /// re-optimizes its frames: true if the repaired field was kept (no worse with the kept matchings and
   /// from the frames alone, better in one), false if the field was left as the realignment made it.
@@ -239,6 +252,7 @@ Singularity_repair_result repair_singularity_graph(const Tetrahedral_mesh_3<Trai
   for(std::size_t f = 0; f < input.size(); ++f) r.changed_faces += (input[f] != matchings.face_matching[f]);
   r.defects_after = r.changed_faces > 0 ? check_local_meshability(mesh, frames, matchings).counts : r.defects_before;
   r.accepted = r.changed_faces > 0;
+  r.rounds = r.accepted ? 1 : 0;
   r.graph_defects_before = internal::graph_defect_count(r.defects_before);
   r.graph_defects_after = internal::graph_defect_count(r.defects_after);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
