@@ -77,9 +77,10 @@ struct Is_c3t3<T, std::void_t<decltype(std::declval<const T&>().cells_in_complex
 /// singularity graph -> realignment with the normals (Sec. 3.3) -> repair of the singularity graph
 /// (`repair_singularity_graph()`, named parameter `singularity_repair`) -> seamless integer-grid map
 /// (Sec. 3.4) -> hex extraction (HexEx, Lyon et al. 2016) -> untangling and smoothing -> check. When the
-/// repaired field gives no valid hex mesh, the field repaired without the sweeps (if the repair swept
-/// curves), then the field without the repair are tried and the first valid mesh is kept
-/// (`Hexahedral_remeshing_result::sweep_fallback`, `repair_fallback`). When a tetrahedral mesh coarser than the
+/// repaired field gives no valid hex mesh, the field of the repair's first round (if it kept more), the
+/// field of one round without the sweeps (if the repair swept curves), then the field without the repair
+/// are tried and the first valid mesh is kept (`Hexahedral_remeshing_result::rounds_fallback`,
+/// `sweep_fallback`, `repair_fallback`). When a tetrahedral mesh coarser than the
 /// hexahedra (fewer than 12 tetrahedra per hexahedron) gives no valid hex mesh, its red refinement is tried
 /// and kept if its mesh is valid (`Hexahedral_remeshing_result::refinement`, `tetrahedron_refinement`).
 /// When all this gives no valid mesh, it runs again with the frame field smoothed from the boundary

@@ -434,8 +434,10 @@ for part in "${long_parts[@]}"; do
   # a mesh from the field without the repair (the repaired one gave none) says so, with what the repaired one gave
   "$py" -c 'import json, sys; r = json.load(open(sys.argv[1]))
 ok = not r["repair_fallback"] or (not r["meshability"]["repair"]["performed"] and r["repaired_field_outcome"].split()[0] in ("INVALID_HEX_MESH", "NO_HEXAHEDRA"))
-ok = ok and not (r["repair_fallback"] and r["sweep_fallback"])
-sys.exit(0 if ok and (r["repair_fallback"] or r["sweep_fallback"] or r["repaired_field_outcome"] == "") else 1)' "$tmp/$part.json" \
+fallbacks = [r["repair_fallback"], r["sweep_fallback"], r["rounds_fallback"]]
+ok = ok and fallbacks.count(True) <= 1
+ok = ok and (not r["rounds_fallback"] or r["meshability"]["repair"]["rounds"] == 1)
+sys.exit(0 if ok and (any(fallbacks) or r["repaired_field_outcome"] == "") else 1)' "$tmp/$part.json" \
     || fail "$part: repair_fallback and the field it reports disagree"
   # the repair at the hex scale accounts for every cluster it found: removed, or kept for one reason
   "$py" -c 'import json, sys; h = json.load(open(sys.argv[1]))["meshability"]["repair"]["hex_scale"]

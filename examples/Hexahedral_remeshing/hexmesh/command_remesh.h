@@ -115,7 +115,7 @@ inline int command_remesh(const Arguments& args)
     Json json;
     json.begin().value("input", in).value("output", write_hexes ? out : std::string()).value("status", HR::status_name(r.status))
         .value("message", r.message).value("failed_stage", r.failed_stage).value("failure_reason", r.failure_reason).value("baseline", f.baseline).value("tetrahedra", r.tetrahedra)
-        .value("repair_fallback", r.repair_fallback).value("sweep_fallback", r.sweep_fallback)
+        .value("repair_fallback", r.repair_fallback).value("sweep_fallback", r.sweep_fallback).value("rounds_fallback", r.rounds_fallback)
         .value("repaired_field_outcome", r.repaired_field_outcome);
     json.begin("tetrahedron_refinement")
         .value("rounds", r.refinement.rounds)
@@ -212,6 +212,9 @@ inline int command_remesh(const Arguments& args)
     if(r.sweep_fallback)
       std::cout << "  sweep fallback      the repaired field gave " << r.repaired_field_outcome
                 << "; this hex mesh is the field's repaired without the sweeps\n";
+    if(r.rounds_fallback)
+      std::cout << "  rounds fallback     the field repaired in rounds gave " << r.repaired_field_outcome
+                << "; this hex mesh is the field's of the repair's first round\n";
     if(r.refinement.rounds > 0)
       std::cout << "  tet refinement      " << (r.refinement.used ? "used" : "tried") << ": " << r.refinement.rounds
                 << (r.refinement.rounds == 1 ? " round" : " rounds") << " of 1-to-8, " << r.refinement.tetrahedra

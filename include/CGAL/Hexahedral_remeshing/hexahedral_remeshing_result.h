@@ -168,8 +168,13 @@ struct Hexahedral_remeshing_result
   /// sweeps (`repair_sweeps`) gives a valid one: this result, hex mesh and `frame_field` are then those
   /// of the field repaired without the sweeps.
   bool sweep_fallback = false;
-  /// With `repair_fallback` or `sweep_fallback`: the status, failed stage and message of the run on the
-  /// repaired field.
+  /// True if the hex mesh of the field repaired in rounds (`maximum_repair_rounds`) was not valid while
+  /// the field of the first round alone gives a valid one: this result, hex mesh and `frame_field` are
+  /// then those of the first round's field. `sweep_fallback` and `repair_fallback` are tried after it,
+  /// from one round.
+  bool rounds_fallback = false;
+  /// With `repair_fallback`, `sweep_fallback` or `rounds_fallback`: the status, failed stage and message
+  /// of the run on the repaired field.
   std::string repaired_field_outcome;
   /// The run on the refined tetrahedral mesh, if any (`tetrahedron_refinement`).
   Tetrahedron_refinement_report refinement;

@@ -440,7 +440,8 @@ bool keep_if_valid(const Tetrahedral_mesh_3<Traits>& mesh, Hexahedral_mesh_3& he
 }
 
 // The pipeline; where the repaired field (the default) gives no valid hex mesh but changed the field, the
-// repair without the sweeps (if it swept curves) and then the field without the repair are tried too, and
+// repair of one round (if it ran more), the repair of one round without the sweeps (if it swept curves) and
+// then the field without the repair are tried too, and
 // the first with a valid hex mesh is kept. The repair's acceptance compares the graph's defects, which do
 // not decide alone whether the map folds where the extraction and the smoothing cannot recover (the
 // stepped shaft: the repair takes its jogs from 67 to 15 and its flat tetrahedra from 105 to 0, yet 3
@@ -453,7 +454,15 @@ Hexahedral_remeshing_result run_hexahedral_remeshing(const Tetrahedral_mesh_3<Tr
 {
   Hexahedral_remeshing_result r = run_pipeline_once(mesh, hexes, np);
   if(r.status == Hexahedral_remeshing_status::OK || !r.frame_field.repaired || !r.frame_field.repair.accepted) return r;
-  if(r.frame_field.repair.swept_curves > 0 && keep_if_valid(mesh, hexes, np, parameters::repair_sweeps(false, np), r)) {
+  // then the first round's field alone, and the fallbacks from it (the torus s16c: valid from its first
+  // round without the sweeps, not from its three rounds)
+  const bool rounds = r.frame_field.repair.rounds > 1;
+  const auto one_round = parameters::maximum_repair_rounds(1, np);
+  if(rounds && keep_if_valid(mesh, hexes, np, one_round, r)) {
+    r.rounds_fallback = true;
+    return r;
+  }
+  if(r.frame_field.repair.swept_curves > 0 && keep_if_valid(mesh, hexes, np, parameters::repair_sweeps(false, one_round), r)) {
     r.sweep_fallback = true;
     return r;
   }
