@@ -137,7 +137,7 @@ inline void add_round(Singularity_repair_result& r, const Singularity_repair_res
 // re-optimized, disagree, and lose the short changes' gains with it (s05c, s11c, n06c).
 // Rounds follow while the last one is kept (`maximum_repair_rounds`): the re-optimized frames move the
 // holonomy axes, so the surgery finds changes on them that it could not find on the frames before
-// (n15c: 2 jogs after the first round, 0 after the third; n05c: 15 graph defects, 4 after four rounds).
+// (n15c: 2 jogs after the first round, 0 after the third; n05c: 15 graph defects after the first, 5 after the third).
 template <class Traits, class NamedParameters, class RealignmentParameters>
 Singularity_repair_result repair_realigned_field(const Tetrahedral_mesh_3<Traits>& mesh, std::vector<Eigen::Matrix3d>& frames,
                                                  Matchings& matchings, Singularity_graph& singularities, const std::vector<int>& prescribed,
